@@ -1,0 +1,104 @@
+// Newton's method with a direct (Amesos) linear solver.
+#ifndef contact_dynamics_nonlinear_solver_h
+#define contact_dynamics_nonlinear_solver_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <functional>
+#include <memory>
+#include <ostream>
+#include <string>
+
+namespace ContactDynamics
+{
+  using namespace dealii;
+
+  /**
+   * The system a Newton solve works on. assemble() evaluates the residual at
+   * the current iterate (with the rows of constrained degrees of freedom
+   * zeroed) and, if asked, the Jacobian; apply_update() adds a Newton
+   * increment to the iterate. converged() lets a formulation veto
+   * convergence (for instance while an active set still changes).
+   */
+  class NonlinearSystem
+  {
+  public:
+    virtual ~NonlinearSystem() = default;
+
+    virtual void
+    assemble(const bool                   with_jacobian,
+             TrilinosWrappers::MPI::Vector &residual,
+             TrilinosWrappers::SparseMatrix &jacobian) = 0;
+
+    virtual void
+    apply_update(const TrilinosWrappers::MPI::Vector &increment) = 0;
+
+    /** The Jacobian does not depend on the iterate (a linear problem). */
+    virtual bool
+    jacobian_is_constant() const
+    {
+      return false;
+    }
+
+    virtual bool
+    converged() const
+    {
+      return true;
+    }
+  };
+
+  class NewtonSolver
+  {
+  public:
+    struct Result
+    {
+      bool         converged      = false;
+      unsigned int iterations     = 0; // linear solves
+      double       initial_residual = 0;
+      double       final_residual = 0;
+      std::string  failure;
+    };
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Solves the system from its current iterate. `structure_changed` tells
+     * that the Jacobian of a constant-Jacobian system must be factorized anew
+     * (a new time step size, a new sparsity pattern). Never throws for a
+     * numerical failure: the result says why it did not converge.
+     */
+    Result
+    solve(NonlinearSystem                &system,
+          TrilinosWrappers::SparseMatrix &jacobian,
+          TrilinosWrappers::MPI::Vector  &residual,
+          TrilinosWrappers::MPI::Vector  &increment,
+          const bool                      structure_changed,
+          std::ostream                   &log);
+
+    bool
+    verbose() const
+    {
+      return verbose_;
+    }
+
+  private:
+    double       absolute_tolerance = 1e-10;
+    double       relative_tolerance = 1e-10;
+    unsigned int max_iterations     = 20;
+    std::string  linear_solver      = "KLU";
+    bool         verbose_           = false;
+
+    std::unique_ptr<SolverControl>                   solver_control;
+    std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
+    bool factorization_valid = false;
+  };
+} // namespace ContactDynamics
+
+#endif

@@ -1,0 +1,186 @@
+// The time loop: owns the mesh, the unknowns and the pieces that act on
+// them, advances Newmark steps with Newton and cuts the step on failure.
+#ifndef contact_dynamics_simulator_h
+#define contact_dynamics_simulator_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <deal.II/lac/affine_constraints.h>
+
+#include <contact_dynamics/bodies.h>
+#include <contact_dynamics/boundary_conditions.h>
+#include <contact_dynamics/nonlinear_solver.h>
+#include <contact_dynamics/postprocessing.h>
+#include <contact_dynamics/scene.h>
+#include <contact_dynamics/solid_mechanics.h>
+#include <contact_dynamics/time_integrator.h>
+
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace ContactDynamics
+{
+  using namespace dealii;
+
+  /** Energies of the discrete system; see doc/theory.md. */
+  struct EnergyBalance
+  {
+    double kinetic     = 0;
+    double elastic     = 0;
+    double dissipated  = 0; // time integral of v.C v
+    double external    = 0; // work of reactions and body forces
+    double initial     = 0; // kinetic + elastic at t = 0
+
+    double
+    error() const
+    {
+      return kinetic + elastic + dissipated - external - initial;
+    }
+  };
+
+  template <int dim>
+  class Simulator : private NonlinearSystem
+  {
+  public:
+    /** Declares every entry; the body subsections follow `layout`. */
+    static void
+    declare_parameters(ParameterHandler &prm, const SceneLayout &layout);
+
+    /**
+     * Reads and checks all parameters (throws ExcMessage on bad input) and
+     * builds the mesh; `screen` receives the progress output.
+     */
+    Simulator(ParameterHandler &prm, std::ostream &screen);
+
+    /** Runs to the end time; throws if a step cannot be completed. */
+    void
+    run();
+
+    const EnergyBalance &
+    energy() const
+    {
+      return energies;
+    }
+
+    double
+    current_time() const
+    {
+      return time;
+    }
+
+    unsigned int
+    n_steps() const
+    {
+      return step;
+    }
+
+    const DoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+
+    const VectorType &
+    displacement() const
+    {
+      return u;
+    }
+
+    const VectorType &
+    velocity() const
+    {
+      return v;
+    }
+
+    /** Sets up the unknowns and the initial state (called by run()). */
+    void
+    initialize();
+
+    /** One time step of size dt; false (state unchanged) if it failed. */
+    bool
+    advance(const double dt);
+
+    /**
+     * For tests of the Jacobian: residual and Jacobian of the current
+     * time step at the displacement `trial`, with time step dt.
+     */
+    void
+    residual_and_jacobian(const VectorType &trial,
+                          const double      dt,
+                          VectorType       &residual,
+                          MatrixType       &jacobian);
+
+  private:
+    // NonlinearSystem
+    void
+    assemble(const bool with_jacobian,
+             VectorType &residual,
+             MatrixType &jacobian) override;
+    void
+    apply_update(const VectorType &increment) override;
+    bool
+    jacobian_is_constant() const override;
+
+    void
+    setup_system();
+    void
+    apply_initial_conditions();
+    void
+    set_trial_velocity_and_acceleration();
+    void
+    output_step(const unsigned int newton_iterations,
+                const double       residual,
+                const bool         force_vtu);
+
+    ConditionalOStream pcout;
+    TimerOutput        timer;
+
+    Scene<dim>                  scene;
+    SceneLayout                 layout;
+    std::vector<BodyParameters> bodies;
+    DirichletConditions<dim>    dirichlet;
+    TimeIntegrator              integrator;
+    NewtonSolver                newton;
+    OutputParameters            output_parameters;
+    double                      time_step;
+    double                      end_time;
+    double                      minimum_time_step;
+
+    Triangulation<dim>                   triangulation;
+    FESystem<dim>                        fe;
+    DoFHandler<dim>                      dof_handler;
+    IndexSet                             locally_owned;
+    AffineConstraints<double>            increment_constraints;
+    std::unique_ptr<SolidMechanics<dim>> mechanics;
+
+    MatrixType jacobian;
+    // state at t_n, the trial state at t_{n+1}, and work vectors
+    VectorType u, v, a, u_new, v_new, a_new;
+    VectorType residual, residual_full, residual_full_old, increment,
+      body_force;
+
+    double       time = 0;
+    double       dt_current = 0;
+    unsigned int step = 0;
+    unsigned int cumulative_newton_iterations = 0;
+    unsigned int time_step_cuts = 0;
+    bool         structure_changed = true;
+    EnergyBalance energies;
+
+    std::unique_ptr<StatisticsFile>      statistics;
+    std::unique_ptr<SolutionWriter<dim>> solution_writer;
+    Timer                                wall_timer;
+  };
+} // namespace ContactDynamics
+
+#endif

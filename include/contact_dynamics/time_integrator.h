@@ -1,0 +1,105 @@
+// Newmark-beta time integration and the quasi-static special case.
+#ifndef contact_dynamics_time_integrator_h
+#define contact_dynamics_time_integrator_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace ContactDynamics
+{
+  using namespace dealii;
+
+  /**
+   * Newmark-beta: with u_{n+1} the unknown,
+   *   a_{n+1} = (u_{n+1} - u_n - dt v_n) / (beta dt^2) - (1/(2 beta) - 1) a_n
+   *   v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1}).
+   * Both are affine in u_{n+1}: a = c_a u + a_0, v = c_v u + v_0. The
+   * quasi-static scheme has no inertia and no damping.
+   */
+  class TimeIntegrator
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    bool
+    is_dynamic() const
+    {
+      return dynamic;
+    }
+
+    double
+    beta() const
+    {
+      return beta_;
+    }
+
+    double
+    gamma() const
+    {
+      return gamma_;
+    }
+
+    /** d a_{n+1} / d u_{n+1} */
+    double
+    acceleration_factor(const double dt) const
+    {
+      return dynamic ? 1. / (beta_ * dt * dt) : 0.;
+    }
+
+    /** d v_{n+1} / d u_{n+1} */
+    double
+    velocity_factor(const double dt) const
+    {
+      return dynamic ? gamma_ / (beta_ * dt) : 0.;
+    }
+
+    /**
+     * New velocity and acceleration from the new displacement, for one
+     * degree of freedom (works on vector entries or whole vectors).
+     */
+    template <typename Number>
+    void
+    update(const double  dt,
+           const Number &u_old,
+           const Number &v_old,
+           const Number &a_old,
+           const Number &u_new,
+           Number       &v_new,
+           Number       &a_new) const
+    {
+      if (!dynamic)
+        {
+          v_new = (u_new - u_old) / dt;
+          a_new = 0. * a_old;
+          return;
+        }
+      a_new = (u_new - u_old - dt * v_old) / (beta_ * dt * dt) -
+              (0.5 / beta_ - 1.) * a_old;
+      v_new = v_old + dt * ((1. - gamma_) * a_old + gamma_ * a_new);
+    }
+
+    /** Predicted displacement at t_{n+1} (Taylor series, zero jerk). */
+    template <typename Number>
+    Number
+    predict(const double  dt,
+            const Number &u_old,
+            const Number &v_old,
+            const Number &a_old) const
+    {
+      if (!dynamic)
+        return u_old;
+      return u_old + dt * v_old + 0.5 * dt * dt * a_old;
+    }
+
+  private:
+    bool   dynamic = true;
+    double beta_   = 0.25;
+    double gamma_  = 0.5;
+  };
+} // namespace ContactDynamics
+
+#endif

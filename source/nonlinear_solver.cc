@@ -1,0 +1,134 @@
+#include <deal.II/base/exceptions.h>
+
+#include <contact_dynamics/nonlinear_solver.h>
+
+#include <cmath>
+#include <iomanip>
+
+namespace ContactDynamics
+{
+  void
+  NewtonSolver::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Absolute tolerance",
+                      "1e-10",
+                      Patterns::Double(0),
+                      "Converged when the l2 norm of the residual (forces at "
+                      "free degrees of freedom) is below this value (force "
+                      "units, >= 0).");
+    prm.declare_entry("Relative tolerance",
+                      "1e-10",
+                      Patterns::Double(0, 1),
+                      "... or below this fraction of the residual at the "
+                      "first iteration of the time step, in [0, 1).");
+    prm.declare_entry("Maximum iterations",
+                      "25",
+                      Patterns::Integer(1, 1000),
+                      "Newton iterations (linear solves) allowed per time "
+                      "step before the step is cut, in [1, 1000].");
+    prm.declare_entry("Linear solver",
+                      "KLU",
+                      Patterns::Selection("KLU|MUMPS"),
+                      "Sparse direct solver (Trilinos Amesos): KLU (serial, "
+                      "fast for small 2-D problems) or MUMPS.");
+    prm.declare_entry("Verbose",
+                      "false",
+                      Patterns::Bool(),
+                      "Print the residual of every Newton iteration.");
+  }
+
+  void
+  NewtonSolver::parse_parameters(ParameterHandler &prm)
+  {
+    absolute_tolerance = prm.get_double("Absolute tolerance");
+    relative_tolerance = prm.get_double("Relative tolerance");
+    max_iterations     = prm.get_integer("Maximum iterations");
+    linear_solver      = prm.get("Linear solver");
+    verbose_           = prm.get_bool("Verbose");
+  }
+
+  NewtonSolver::Result
+  NewtonSolver::solve(NonlinearSystem                &system,
+                      TrilinosWrappers::SparseMatrix &jacobian,
+                      TrilinosWrappers::MPI::Vector  &residual,
+                      TrilinosWrappers::MPI::Vector  &increment,
+                      const bool                      structure_changed,
+                      std::ostream                   &log)
+  {
+    Result     result;
+    const bool reuse = system.jacobian_is_constant();
+    if (structure_changed || !reuse)
+      factorization_valid = false;
+
+    for (unsigned int it = 0;; ++it)
+      {
+        const bool need_jacobian = !factorization_valid;
+        try
+          {
+            system.assemble(need_jacobian, residual, jacobian);
+          }
+        catch (const std::exception &e)
+          {
+            result.failure = e.what();
+            factorization_valid = false;
+            return result;
+          }
+        const double norm = residual.l2_norm();
+        if (it == 0)
+          result.initial_residual = norm;
+        result.final_residual = norm;
+        if (verbose_)
+          log << "    Newton " << std::setw(2) << it << "  residual "
+              << std::scientific << std::setprecision(3) << norm
+              << std::defaultfloat << std::endl;
+        if (!std::isfinite(norm))
+          {
+            result.failure = "the residual is not a finite number";
+            factorization_valid = false;
+            return result;
+          }
+        if ((norm <= absolute_tolerance ||
+             norm <= relative_tolerance * result.initial_residual) &&
+            system.converged())
+          {
+            result.converged = true;
+            return result;
+          }
+        if (it == max_iterations)
+          {
+            result.failure = "no convergence in " +
+                             std::to_string(max_iterations) +
+                             " Newton iterations";
+            return result;
+          }
+
+        try
+          {
+            if (need_jacobian)
+              {
+                solver_control = std::make_unique<SolverControl>(1, 0);
+                direct_solver = std::make_unique<TrilinosWrappers::SolverDirect>(
+                  *solver_control,
+                  TrilinosWrappers::SolverDirect::AdditionalData(
+                    false,
+                    linear_solver == "MUMPS" ? "Amesos_Mumps" :
+                                               "Amesos_Klu"));
+                direct_solver->initialize(jacobian);
+                factorization_valid = reuse;
+              }
+            // Newton: J du = -R
+            residual *= -1.;
+            direct_solver->solve(increment, residual);
+          }
+        catch (const std::exception &e)
+          {
+            result.failure = std::string("the linear solver failed: ") +
+                             e.what();
+            factorization_valid = false;
+            return result;
+          }
+        ++result.iterations;
+        system.apply_update(increment);
+      }
+  }
+} // namespace ContactDynamics

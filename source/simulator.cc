@@ -1,0 +1,512 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <contact_dynamics/simulator.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+
+namespace ContactDynamics
+{
+  template <int dim>
+  void
+  Simulator<dim>::declare_parameters(ParameterHandler  &prm,
+                                     const SceneLayout &layout)
+  {
+    Scene<dim>::declare_parameters(prm);
+    for (const auto &name : layout.body_names)
+      {
+        prm.enter_subsection(BodyParameters::subsection_name(name));
+        BodyParameters::declare_parameters(prm, dim);
+        prm.leave_subsection();
+      }
+    prm.enter_subsection("Boundary conditions");
+    DirichletConditions<dim>::declare_parameters(prm);
+    prm.leave_subsection();
+
+    prm.enter_subsection("Time integration");
+    TimeIntegrator::declare_parameters(prm);
+    prm.declare_entry("Time step",
+                      "0.025",
+                      Patterns::Double(1e-300),
+                      "Nominal time step (> 0). Steps are halved when a "
+                      "Newton solve fails and grow back to this value.");
+    prm.declare_entry("End time", "1", Patterns::Double(0), "End time (>= 0).");
+    prm.declare_entry("Minimum time step",
+                      "1e-6",
+                      Patterns::Double(1e-300),
+                      "The run stops with an error when a failed step would "
+                      "need a time step below this value (> 0).");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Nonlinear solver");
+    NewtonSolver::declare_parameters(prm);
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    OutputParameters::declare_parameters(prm);
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  Simulator<dim>::Simulator(ParameterHandler &prm, std::ostream &screen)
+    : pcout(screen, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    , timer(MPI_COMM_WORLD, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , fe(FE_Q<dim>(1), dim)
+    , dof_handler(triangulation)
+  {
+    scene.parse_parameters(prm);
+    layout = scene.layout();
+    for (const auto &name : layout.body_names)
+      {
+        BodyParameters body;
+        body.name = name;
+        prm.enter_subsection(BodyParameters::subsection_name(name));
+        body.parse_parameters(prm, dim);
+        prm.leave_subsection();
+        bodies.push_back(body);
+      }
+    prm.enter_subsection("Boundary conditions");
+    dirichlet.parse_parameters(prm, layout);
+    prm.leave_subsection();
+
+    prm.enter_subsection("Time integration");
+    integrator.parse_parameters(prm);
+    time_step         = prm.get_double("Time step");
+    end_time          = prm.get_double("End time");
+    minimum_time_step = prm.get_double("Minimum time step");
+    prm.leave_subsection();
+    AssertThrow(minimum_time_step <= time_step,
+                ExcMessage("Time integration/Minimum time step = " +
+                           std::to_string(minimum_time_step) +
+                           " exceeds Time integration/Time step = " +
+                           std::to_string(time_step) + "."));
+
+    prm.enter_subsection("Nonlinear solver");
+    newton.parse_parameters(prm);
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    output_parameters.parse_parameters(prm);
+    prm.leave_subsection();
+
+    mechanics = std::make_unique<SolidMechanics<dim>>(dof_handler, bodies);
+    scene.create_triangulation(triangulation);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_system()
+  {
+    TimerOutput::Scope t(timer, "setup");
+    dof_handler.distribute_dofs(fe);
+    locally_owned = dof_handler.locally_owned_dofs();
+
+    // Dirichlet degrees of freedom: Newton increments vanish there.
+    increment_constraints.clear();
+    for (const auto &p : dirichlet.values(dof_handler, 0.))
+      increment_constraints.add_line(p.first);
+    increment_constraints.close();
+
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    dsp,
+                                    increment_constraints,
+                                    false);
+    jacobian.reinit(locally_owned, locally_owned, dsp, MPI_COMM_WORLD);
+
+    for (VectorType *vec : {&u,
+                            &v,
+                            &a,
+                            &u_new,
+                            &v_new,
+                            &a_new,
+                            &residual,
+                            &residual_full,
+                            &residual_full_old,
+                            &increment,
+                            &body_force})
+      vec->reinit(locally_owned, MPI_COMM_WORLD);
+    mechanics->assemble_body_force(body_force);
+    structure_changed = true;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::apply_initial_conditions()
+  {
+    TimerOutput::Scope t(timer, "initial conditions");
+    const unsigned int n_components = fe.n_components();
+    std::vector<std::unique_ptr<FunctionParser<dim>>> functions;
+    std::map<types::material_id, const Function<dim> *> u_map, v_map;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      for (const bool displacement : {true, false})
+        {
+          const std::string parameter =
+            BodyParameters::subsection_name(bodies[b].name) +
+            (displacement ? "/Initial displacement" :
+                            "/Initial velocity");
+          auto expressions = split_vector_expression(
+            displacement ? bodies[b].initial_displacement :
+                           bodies[b].initial_velocity,
+            dim,
+            parameter);
+          expressions.resize(n_components, "0");
+          auto f = std::make_unique<FunctionParser<dim>>(n_components);
+          try
+            {
+              f->initialize(FunctionParser<dim>::default_variable_names(),
+                            expressions,
+                            {{"pi", numbers::PI}});
+            }
+          catch (...)
+            {
+              AssertThrow(false,
+                          ExcMessage("FunctionParser cannot read the "
+                                     "parameter '" +
+                                     parameter + "'."));
+            }
+          (displacement ? u_map : v_map)[b] = f.get();
+          functions.push_back(std::move(f));
+        }
+    VectorTools::interpolate_based_on_material_id(MappingQ1<dim>(),
+                                                  dof_handler,
+                                                  u_map,
+                                                  u);
+    VectorTools::interpolate_based_on_material_id(MappingQ1<dim>(),
+                                                  dof_handler,
+                                                  v_map,
+                                                  v);
+    a = 0;
+
+    // The prescribed motion wins at Dirichlet degrees of freedom; its rate
+    // by central differences keeps the Newmark update of those dofs
+    // consistent from the first step on.
+    std::map<types::global_dof_index, double> v_dirichlet, a_dirichlet;
+    dirichlet.rates(dof_handler, 0., 1e-4 * time_step, v_dirichlet, a_dirichlet);
+    for (const auto &p : dirichlet.values(dof_handler, 0.))
+      if (locally_owned.is_element(p.first))
+        u(p.first) = p.second;
+    if (!integrator.is_dynamic())
+      v = 0;
+    else
+      {
+        for (const auto &p : v_dirichlet)
+          if (locally_owned.is_element(p.first))
+            v(p.first) = p.second;
+
+        // consistent initial acceleration: M a0 = f_body - C v0 - f_int(u0)
+        AffineConstraints<double> acceleration_constraints;
+        for (const auto &p : a_dirichlet)
+          {
+            acceleration_constraints.add_line(p.first);
+            acceleration_constraints.set_inhomogeneity(p.first, p.second);
+          }
+        acceleration_constraints.close();
+        MatrixType mass;
+        mass.reinit(jacobian);
+        mechanics->assemble_initial_acceleration_system(
+          u, v, acceleration_constraints, mass, residual);
+        SolverControl                  control(1, 0);
+        TrilinosWrappers::SolverDirect solver(control);
+        solver.solve(mass, a, residual);
+        acceleration_constraints.distribute(a);
+      }
+    u.compress(VectorOperation::insert);
+    v.compress(VectorOperation::insert);
+
+    // reactions at t = 0 for the trapezoidal external work
+    mechanics->assemble(u,
+                        v,
+                        a,
+                        integrator.is_dynamic() ? 1. : 0.,
+                        0.,
+                        increment_constraints,
+                        false,
+                        residual,
+                        jacobian,
+                        residual_full_old);
+
+    energies          = EnergyBalance();
+    energies.kinetic  = integrator.is_dynamic() ? mechanics->kinetic_energy(v) : 0.;
+    energies.elastic  = mechanics->elastic_energy(u);
+    energies.initial  = energies.kinetic + energies.elastic;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::initialize()
+  {
+    wall_timer.restart();
+    time                         = 0;
+    step                         = 0;
+    cumulative_newton_iterations = 0;
+    time_step_cuts               = 0;
+    setup_system();
+    apply_initial_conditions();
+
+    std::filesystem::create_directories(output_parameters.directory);
+    statistics = std::make_unique<StatisticsFile>(
+      output_parameters.directory + "/statistics.csv",
+      std::vector<std::string>{"step",
+                               "time",
+                               "dt",
+                               "newton_iterations",
+                               "cumulative_newton_iterations",
+                               "kinetic_energy",
+                               "elastic_energy",
+                               "damping_dissipation",
+                               "external_work",
+                               "energy_balance_error",
+                               "wall_time",
+                               "final_residual",
+                               "time_step_cuts"});
+    solution_writer =
+      std::make_unique<SolutionWriter<dim>>(output_parameters.directory);
+
+    pcout << "Scene '" << scene.name() << "': "
+          << triangulation.n_active_cells() << " cells, "
+          << dof_handler.n_dofs() << " unknowns, " << bodies.size()
+          << " bod" << (bodies.size() == 1 ? "y" : "ies") << std::endl;
+    output_step(0, 0., true);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::set_trial_velocity_and_acceleration()
+  {
+    const double dt = dt_current;
+    auto         un = u_new.begin();
+    auto         vn = v_new.begin();
+    auto         an = a_new.begin();
+    auto         uo = u.begin();
+    auto         vo = v.begin();
+    auto         ao = a.begin();
+    for (; un != u_new.end(); ++un, ++vn, ++an, ++uo, ++vo, ++ao)
+      integrator.update(dt, *uo, *vo, *ao, *un, *vn, *an);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::assemble(const bool  with_jacobian,
+                           VectorType &residual_out,
+                           MatrixType &jacobian_out)
+  {
+    TimerOutput::Scope t(timer, "assembly");
+    set_trial_velocity_and_acceleration();
+    mechanics->assemble(u_new,
+                        v_new,
+                        a_new,
+                        integrator.acceleration_factor(dt_current),
+                        integrator.velocity_factor(dt_current),
+                        increment_constraints,
+                        with_jacobian,
+                        residual_out,
+                        jacobian_out,
+                        residual_full);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::apply_update(const VectorType &du)
+  {
+    increment = du;
+    increment_constraints.set_zero(increment);
+    u_new += increment;
+  }
+
+  template <int dim>
+  bool
+  Simulator<dim>::jacobian_is_constant() const
+  {
+    return mechanics->is_linear();
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::residual_and_jacobian(const VectorType &trial,
+                                        const double      dt,
+                                        VectorType       &residual_out,
+                                        MatrixType       &jacobian_out)
+  {
+    dt_current = dt;
+    u_new      = trial;
+    assemble(true, residual_out, jacobian_out);
+  }
+
+  template <int dim>
+  bool
+  Simulator<dim>::advance(const double dt)
+  {
+    if (dt != dt_current)
+      structure_changed = true;
+    dt_current        = dt;
+    const double t_new = time + dt;
+
+    {
+      auto un = u_new.begin();
+      auto uo = u.begin();
+      auto vo = v.begin();
+      auto ao = a.begin();
+      for (; un != u_new.end(); ++un, ++uo, ++vo, ++ao)
+        *un = integrator.predict(dt, *uo, *vo, *ao);
+      for (const auto &p : dirichlet.values(dof_handler, t_new))
+        if (locally_owned.is_element(p.first))
+          u_new(p.first) = p.second;
+      u_new.compress(VectorOperation::insert);
+    }
+
+    NewtonSolver::Result result;
+    {
+      TimerOutput::Scope t(timer, "Newton solve");
+      result = newton.solve(
+        *this, jacobian, residual, increment, structure_changed, pcout.get_stream());
+    }
+    std::string failure = result.failure;
+
+    EnergyBalance updated = energies;
+    if (result.converged)
+      {
+        TimerOutput::Scope t(timer, "energies");
+        set_trial_velocity_and_acceleration();
+        VectorType mean_velocity(v);
+        mean_velocity.sadd(0.5, 0.5, v_new);
+        increment = u_new;
+        increment -= u;
+        updated.dissipated +=
+          dt * mechanics->damping_product(mean_velocity, mean_velocity);
+        double boundary_work = 0;
+        for (const auto &line : increment_constraints.get_lines())
+          if (locally_owned.is_element(line.index))
+            boundary_work +=
+              increment(line.index) * 0.5 *
+              (residual_full_old(line.index) + residual_full(line.index));
+        updated.external += Utilities::MPI::sum(boundary_work, MPI_COMM_WORLD) +
+                            increment * body_force;
+        updated.kinetic =
+          integrator.is_dynamic() ? mechanics->kinetic_energy(v_new) : 0.;
+        updated.elastic = mechanics->elastic_energy(u_new);
+        if (!std::isfinite(updated.error()))
+          failure = "the energies are not finite numbers";
+      }
+    if (!failure.empty() || !result.converged)
+      {
+        structure_changed = true;
+        pcout << "  step to t = " << t_new << " with dt = " << dt
+              << " failed: " << (failure.empty() ? "no convergence" : failure)
+              << std::endl;
+        return false;
+      }
+
+    energies = updated;
+    u.swap(u_new);
+    v.swap(v_new);
+    a.swap(a_new);
+    residual_full_old.swap(residual_full);
+    time = t_new;
+    ++step;
+    structure_changed = false;
+    cumulative_newton_iterations += result.iterations;
+    output_step(result.iterations, result.final_residual, false);
+    return true;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::output_step(const unsigned int newton_iterations,
+                              const double       final_residual,
+                              const bool         force_vtu)
+  {
+    TimerOutput::Scope t(timer, "output");
+    statistics->write_row({double(step),
+                           time,
+                           step == 0 ? 0. : dt_current,
+                           double(newton_iterations),
+                           double(cumulative_newton_iterations),
+                           energies.kinetic,
+                           energies.elastic,
+                           energies.dissipated,
+                           energies.external,
+                           energies.error(),
+                           wall_timer.wall_time(),
+                           final_residual,
+                           double(time_step_cuts)});
+    const unsigned int interval = output_parameters.vtu_interval;
+    if (interval > 0 && (force_vtu || step % interval == 0))
+      solution_writer->write(dof_handler, *mechanics, u, v, time, step);
+
+    if (step > 0)
+      pcout << "Step " << std::setw(5) << step << "  t = " << std::setw(10)
+            << std::setprecision(6) << time << "  dt = " << std::setw(9)
+            << dt_current << "  Newton " << std::setw(2) << newton_iterations
+            << "  |R| = " << std::scientific << std::setprecision(2)
+            << final_residual << "  E = "
+            << energies.kinetic + energies.elastic
+            << "  balance error = " << energies.error() << std::defaultfloat
+            << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::run()
+  {
+    initialize();
+    double       dt              = time_step;
+    unsigned int good_since_cut  = 0;
+    bool         last_step_wrote = true;
+    while (time < end_time - 1e-9 * time_step)
+      {
+        const double dt_try = std::min(dt, end_time - time);
+        if (advance(dt_try))
+          {
+            last_step_wrote = (output_parameters.vtu_interval > 0 &&
+                               step % output_parameters.vtu_interval == 0);
+            if (dt < time_step && ++good_since_cut >= 2)
+              {
+                dt             = std::min(2 * dt, time_step);
+                good_since_cut = 0;
+              }
+          }
+        else
+          {
+            ++time_step_cuts;
+            good_since_cut = 0;
+            dt             = dt_try / 2;
+            AssertThrow(dt >= minimum_time_step,
+                        ExcMessage(
+                          "The time step would have to be cut to " +
+                          std::to_string(dt) + " at t = " +
+                          std::to_string(time) +
+                          ", below Time integration/Minimum time step = " +
+                          std::to_string(minimum_time_step) +
+                          ". The run stops here; statistics.csv and the VTU "
+                          "files in '" +
+                          output_parameters.directory +
+                          "' hold every completed step."));
+            pcout << "  cutting the time step to " << dt << std::endl;
+          }
+      }
+    if (!last_step_wrote && output_parameters.vtu_interval > 0)
+      solution_writer->write(dof_handler, *mechanics, u, v, time, step);
+
+    pcout << "Finished at t = " << time << " after " << step << " steps ("
+          << cumulative_newton_iterations << " Newton iterations, "
+          << time_step_cuts << " time step cuts). Results are in '"
+          << output_parameters.directory << "'." << std::endl;
+    timer.print_summary();
+  }
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace ContactDynamics

@@ -1,0 +1,47 @@
+#include <deal.II/base/exceptions.h>
+
+#include <contact_dynamics/time_integrator.h>
+
+namespace ContactDynamics
+{
+  void
+  TimeIntegrator::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Scheme",
+                      "newmark",
+                      Patterns::Selection("newmark|quasi-static"),
+                      "'newmark': implicit dynamics with Newmark-beta. "
+                      "'quasi-static': no inertia and no damping; time only "
+                      "parametrizes the loading (cheaper: no mass matrix).");
+    prm.declare_entry("Newmark beta",
+                      "0.25",
+                      Patterns::Double(1e-6, 0.5),
+                      "Newmark beta in (0, 0.5]. 0.25 with gamma = 0.5 (the "
+                      "trapezoidal rule) conserves the energy of a linear "
+                      "undamped system; unconditionally stable if "
+                      "beta >= (gamma + 1/2)^2 / 4.");
+    prm.declare_entry("Newmark gamma",
+                      "0.5",
+                      Patterns::Double(0.5, 1.),
+                      "Newmark gamma in [0.5, 1]; gamma > 0.5 adds numerical "
+                      "dissipation of first order in dt.");
+  }
+
+  void
+  TimeIntegrator::parse_parameters(ParameterHandler &prm)
+  {
+    dynamic = (prm.get("Scheme") == "newmark");
+    beta_   = prm.get_double("Newmark beta");
+    gamma_  = prm.get_double("Newmark gamma");
+    AssertThrow(!dynamic || beta_ >= 0.25 * (gamma_ + 0.5) * (gamma_ + 0.5) -
+                                       1e-12,
+                ExcMessage("Time integration/Newmark beta = " +
+                           std::to_string(beta_) + " with Newmark gamma = " +
+                           std::to_string(gamma_) +
+                           " is only conditionally stable; this implicit code "
+                           "requires beta >= (gamma + 1/2)^2 / 4 = " +
+                           std::to_string(0.25 * (gamma_ + 0.5) *
+                                          (gamma_ + 0.5)) +
+                           "."));
+  }
+} // namespace ContactDynamics
