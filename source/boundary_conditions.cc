@@ -5,6 +5,8 @@
 
 #include <contact_dynamics/boundary_conditions.h>
 
+#include <sstream>
+
 namespace ContactDynamics
 {
   namespace
@@ -72,7 +74,18 @@ namespace ContactDynamics
         const std::string components =
           Utilities::trim(entry.substr(first + 1, second - first - 1));
         const std::string expression = Utilities::trim(entry.substr(second + 1));
-        c.boundary_id = layout.surface_id(c.surface);
+        try
+          {
+            c.boundary_id = layout.surface_id(c.surface);
+          }
+        catch (const ExceptionBase &e)
+          {
+            std::ostringstream message;
+            e.print_info(message);
+            AssertThrow(false,
+                        ExcMessage("In 'Boundary conditions/Dirichlet': " +
+                                   Utilities::trim(message.str())));
+          }
 
         std::vector<bool> mask(dim, false);
         AssertThrow(!components.empty(), error("names no component"));

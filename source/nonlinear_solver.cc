@@ -106,7 +106,7 @@ namespace ContactDynamics
           {
             if (need_jacobian)
               {
-                solver_control = std::make_unique<SolverControl>(1, 0);
+                solver_control = std::make_unique<SolverControl>(1, 0, false, false);
                 direct_solver = std::make_unique<TrilinosWrappers::SolverDirect>(
                   *solver_control,
                   TrilinosWrappers::SolverDirect::AdditionalData(

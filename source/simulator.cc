@@ -218,7 +218,7 @@ namespace ContactDynamics
         mass.reinit(jacobian);
         mechanics->assemble_initial_acceleration_system(
           u, v, acceleration_constraints, mass, residual);
-        SolverControl                  control(1, 0);
+        SolverControl                  control(1, 0, false, false);
         TrilinosWrappers::SolverDirect solver(control);
         solver.solve(mass, a, residual);
         acceleration_constraints.distribute(a);
@@ -334,15 +334,16 @@ namespace ContactDynamics
   }
 
   template <int dim>
-  void
+  const MatrixType &
   Simulator<dim>::residual_and_jacobian(const VectorType &trial,
                                         const double      dt,
-                                        VectorType       &residual_out,
-                                        MatrixType       &jacobian_out)
+                                        VectorType       &residual_out)
   {
     dt_current = dt;
     u_new      = trial;
-    assemble(true, residual_out, jacobian_out);
+    assemble(true, residual_out, jacobian);
+    structure_changed = true;
+    return jacobian;
   }
 
   template <int dim>

@@ -4,6 +4,7 @@
 #define contact_dynamics_tests_h
 
 #include <deal.II/base/logstream.h>
+#include <deal.II/base/mpi.h>
 
 #include <fstream>
 #include <iomanip>
@@ -11,6 +12,12 @@
 inline std::ofstream &
 initlog()
 {
+  // the library uses MPI (Trilinos), also in serial
+  static int                                      argc = 1;
+  static char                                     name[] = "test";
+  static char                                    *args[] = {name, nullptr};
+  static char                                   **argv   = args;
+  static dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   static std::ofstream logfile("output");
   dealii::deallog.attach(logfile);
   dealii::deallog.depth_console(0);
@@ -39,6 +46,26 @@ check_true(const std::string &name, const bool condition)
 {
   dealii::deallog << name << ": " << (condition ? "OK" : "FAILED")
                   << std::endl;
+}
+
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <contact_dynamics/application.h>
+
+#include <string>
+
+// Writes `text` to `filename` and reads it as the application would.
+inline void
+read_test_parameters(const std::string         &filename,
+                     const std::string         &text,
+                     dealii::ParameterHandler  &prm)
+{
+  {
+    std::ofstream f(filename);
+    f << text;
+  }
+  ContactDynamics::read_parameters(filename, prm);
 }
 
 #endif

@@ -111,14 +111,13 @@ namespace ContactDynamics
     advance(const double dt);
 
     /**
-     * For tests of the Jacobian: residual and Jacobian of the current
-     * time step at the displacement `trial`, with time step dt.
+     * For tests of the Jacobian: the residual of the current time step at
+     * the displacement `trial` with time step dt, and the Jacobian there.
      */
-    void
+    const MatrixType &
     residual_and_jacobian(const VectorType &trial,
                           const double      dt,
-                          VectorType       &residual,
-                          MatrixType       &jacobian);
+                          VectorType       &residual);
 
   private:
     // NonlinearSystem
