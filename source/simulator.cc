@@ -238,6 +238,15 @@ namespace ContactDynamics
                         jacobian,
                         residual_full_old);
 
+    AssertThrow(std::isfinite(u.l2_norm()) && std::isfinite(v.l2_norm()),
+                ExcMessage("The initial displacement or velocity (Body <name>/"
+                           "Initial displacement, Initial velocity, or the "
+                           "Dirichlet values at t = 0) is not a finite number "
+                           "somewhere."));
+    AssertThrow(std::isfinite(a.l2_norm()),
+                ExcMessage("The initial acceleration is not finite: check "
+                           "that the Dirichlet expressions are smooth at "
+                           "t = 0 and that every body is held or free."));
     energies          = EnergyBalance();
     energies.kinetic  = integrator.is_dynamic() ? mechanics->kinetic_energy(v) : 0.;
     energies.elastic  = mechanics->elastic_energy(u);

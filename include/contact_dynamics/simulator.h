@@ -149,6 +149,8 @@ namespace ContactDynamics
     std::vector<BodyParameters> bodies;
     DirichletConditions<dim>    dirichlet;
     TimeIntegrator              integrator;
+    // the Jacobian must outlive the factorization that refers to it
+    MatrixType                  jacobian;
     NewtonSolver                newton;
     OutputParameters            output_parameters;
     double                      time_step;
@@ -162,7 +164,6 @@ namespace ContactDynamics
     AffineConstraints<double>            increment_constraints;
     std::unique_ptr<SolidMechanics<dim>> mechanics;
 
-    MatrixType jacobian;
     // state at t_n, the trial state at t_{n+1}, and work vectors
     VectorType u, v, a, u_new, v_new, a_new;
     VectorType residual, residual_full, residual_full_old, increment,
