@@ -127,8 +127,10 @@ namespace ContactDynamics
 
 
   template <int dim>
-  SolutionWriter<dim>::SolutionWriter(const std::string &directory)
+  SolutionWriter<dim>::SolutionWriter(const std::string              &directory,
+                                      const std::vector<std::string> &extra_names)
     : directory(directory)
+    , extra_names(extra_names)
   {}
 
   template <int dim>
@@ -155,8 +157,9 @@ namespace ContactDynamics
       }
     for (unsigned int c = dim; c < n_components; ++c)
       {
-        u_names[c] = "field_" + std::to_string(c);
-        v_names[c] = "field_rate_" + std::to_string(c);
+        u_names[c] = c - dim < extra_names.size() ? extra_names[c - dim] :
+                                                    "field_" + std::to_string(c);
+        v_names[c] = u_names[c] + "_rate";
       }
 
     StressPostprocessor<dim> stress(mechanics);

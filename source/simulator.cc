@@ -57,13 +57,14 @@ namespace ContactDynamics
     prm.enter_subsection("Output");
     OutputParameters::declare_parameters(prm);
     prm.leave_subsection();
+
+    declare_contact_parameters(prm);
   }
 
   template <int dim>
   Simulator<dim>::Simulator(ParameterHandler &prm, std::ostream &screen)
     : pcout(screen, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     , timer(MPI_COMM_WORLD, pcout, TimerOutput::never, TimerOutput::wall_times)
-    , fe(FE_Q<dim>(1), dim)
     , dof_handler(triangulation)
   {
     scene.parse_parameters(prm);
@@ -101,6 +102,17 @@ namespace ContactDynamics
     output_parameters.parse_parameters(prm);
     prm.leave_subsection();
 
+    contact = create_contact_formulation<dim>(prm,
+                                              layout,
+                                              output_parameters.directory);
+    if (contact)
+      fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(1),
+                                           dim,
+                                           FE_Q<dim>(1),
+                                           contact->n_extra_components());
+    else
+      fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(1), dim);
+
     mechanics = std::make_unique<SolidMechanics<dim>>(dof_handler, bodies);
     scene.create_triangulation(triangulation);
   }
@@ -110,21 +122,19 @@ namespace ContactDynamics
   Simulator<dim>::setup_system()
   {
     TimerOutput::Scope t(timer, "setup");
-    dof_handler.distribute_dofs(fe);
+    dof_handler.distribute_dofs(*fe);
     locally_owned = dof_handler.locally_owned_dofs();
+    if (contact)
+      contact->setup(dof_handler);
 
-    // Dirichlet degrees of freedom: Newton increments vanish there.
+    // Dirichlet degrees of freedom: Newton increments vanish there; so do
+    // the multipliers the contact formulation does not use.
     increment_constraints.clear();
     for (const auto &p : dirichlet.values(dof_handler, 0.))
       increment_constraints.add_line(p.first);
+    if (contact)
+      contact->add_constraints(increment_constraints);
     increment_constraints.close();
-
-    DynamicSparsityPattern dsp(dof_handler.n_dofs());
-    DoFTools::make_sparsity_pattern(dof_handler,
-                                    dsp,
-                                    increment_constraints,
-                                    false);
-    jacobian.reinit(locally_owned, locally_owned, dsp, MPI_COMM_WORLD);
 
     for (VectorType *vec : {&u,
                             &v,
@@ -139,6 +149,30 @@ namespace ContactDynamics
                             &body_force})
       vec->reinit(locally_owned, MPI_COMM_WORLD);
     mechanics->assemble_body_force(body_force);
+    if (contact)
+      contact->update_candidates(u);
+    setup_sparsity();
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_sparsity()
+  {
+    // the bulk couples displacements only; contact adds its own couplings
+    const unsigned int           n_components = fe->n_components();
+    Table<2, DoFTools::Coupling> coupling(n_components, n_components);
+    for (unsigned int c = 0; c < n_components; ++c)
+      for (unsigned int d = 0; d < n_components; ++d)
+        coupling(c, d) =
+          (c < dim && d < dim) ? DoFTools::always : DoFTools::none;
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(
+      dof_handler, coupling, dsp, increment_constraints, false);
+    for (const auto i : locally_owned)
+      dsp.add(i, i);
+    if (contact)
+      contact->add_sparsity(dsp);
+    jacobian.reinit(locally_owned, locally_owned, dsp, MPI_COMM_WORLD);
     structure_changed = true;
   }
 
@@ -147,7 +181,7 @@ namespace ContactDynamics
   Simulator<dim>::apply_initial_conditions()
   {
     TimerOutput::Scope t(timer, "initial conditions");
-    const unsigned int n_components = fe.n_components();
+    const unsigned int n_components = fe->n_components();
     std::vector<std::unique_ptr<FunctionParser<dim>>> functions;
     std::map<types::material_id, const Function<dim> *> u_map, v_map;
     for (unsigned int b = 0; b < bodies.size(); ++b)
@@ -213,6 +247,14 @@ namespace ContactDynamics
             acceleration_constraints.add_line(p.first);
             acceleration_constraints.set_inhomogeneity(p.first, p.second);
           }
+        // multipliers have no inertia; the bodies start out of contact
+        std::vector<bool> extra(fe->n_components(), true);
+        for (unsigned int d = 0; d < dim; ++d)
+          extra[d] = false;
+        for (const auto i :
+             DoFTools::extract_dofs(dof_handler, ComponentMask(extra)))
+          if (!acceleration_constraints.is_constrained(i))
+            acceleration_constraints.add_line(i);
         acceleration_constraints.close();
         MatrixType mass;
         mass.reinit(jacobian);
@@ -258,6 +300,7 @@ namespace ContactDynamics
   Simulator<dim>::initialize()
   {
     wall_timer.restart();
+    std::filesystem::create_directories(output_parameters.directory);
     time                         = 0;
     step                         = 0;
     cumulative_newton_iterations = 0;
@@ -265,10 +308,7 @@ namespace ContactDynamics
     setup_system();
     apply_initial_conditions();
 
-    std::filesystem::create_directories(output_parameters.directory);
-    statistics = std::make_unique<StatisticsFile>(
-      output_parameters.directory + "/statistics.csv",
-      std::vector<std::string>{"step",
+    std::vector<std::string> columns{"step",
                                "time",
                                "dt",
                                "newton_iterations",
@@ -280,9 +320,16 @@ namespace ContactDynamics
                                "energy_balance_error",
                                "wall_time",
                                "final_residual",
-                               "time_step_cuts"});
-    solution_writer =
-      std::make_unique<SolutionWriter<dim>>(output_parameters.directory);
+                               "time_step_cuts"};
+    if (contact)
+      for (const auto &c : contact->statistics_columns())
+        columns.push_back(c);
+    statistics = std::make_unique<StatisticsFile>(
+      output_parameters.directory + "/statistics.csv", columns);
+    solution_writer = std::make_unique<SolutionWriter<dim>>(
+      output_parameters.directory,
+      contact ? contact->extra_component_names() :
+                std::vector<std::string>());
 
     pcout << "Scene '" << scene.name() << "': "
           << triangulation.n_active_cells() << " cells, "
@@ -314,6 +361,8 @@ namespace ContactDynamics
   {
     TimerOutput::Scope t(timer, "assembly");
     set_trial_velocity_and_acceleration();
+    if (contact && contact->update_candidates(u_new))
+      setup_sparsity();
     mechanics->assemble(u_new,
                         v_new,
                         a_new,
@@ -324,6 +373,20 @@ namespace ContactDynamics
                         residual_out,
                         jacobian_out,
                         residual_full);
+    if (contact)
+      {
+        TimerOutput::Scope tc(timer, "contact assembly");
+        contact->assemble(TrialState{u_new,
+                                     v_new,
+                                     integrator.velocity_factor(dt_current),
+                                     dt_current,
+                                     integrator.is_dynamic()},
+                          increment_constraints,
+                          with_jacobian,
+                          residual_out,
+                          jacobian_out,
+                          residual_full);
+      }
   }
 
   template <int dim>
@@ -339,7 +402,14 @@ namespace ContactDynamics
   bool
   Simulator<dim>::jacobian_is_constant() const
   {
-    return mechanics->is_linear();
+    return mechanics->is_linear() && !contact;
+  }
+
+  template <int dim>
+  bool
+  Simulator<dim>::converged() const
+  {
+    return !contact || contact->active_set_converged();
   }
 
   template <int dim>
@@ -374,6 +444,9 @@ namespace ContactDynamics
       for (const auto &p : dirichlet.values(dof_handler, t_new))
         if (locally_owned.is_element(p.first))
           u_new(p.first) = p.second;
+      if (contact)
+        for (const auto i : contact->multiplier_dofs())
+          u_new(i) = u(i);
       u_new.compress(VectorOperation::insert);
     }
 
@@ -420,6 +493,8 @@ namespace ContactDynamics
       }
 
     energies = updated;
+    if (contact)
+      contact->commit_step(u, t_new);
     u.swap(u_new);
     v.swap(v_new);
     a.swap(a_new);
@@ -439,7 +514,7 @@ namespace ContactDynamics
                               const bool         force_vtu)
   {
     TimerOutput::Scope t(timer, "output");
-    statistics->write_row({double(step),
+    std::vector<double> row{double(step),
                            time,
                            step == 0 ? 0. : dt_current,
                            double(newton_iterations),
@@ -451,10 +526,18 @@ namespace ContactDynamics
                            energies.error(),
                            wall_timer.wall_time(),
                            final_residual,
-                           double(time_step_cuts)});
+                           double(time_step_cuts)};
+    if (contact)
+      for (const double x : contact->statistics())
+        row.push_back(x);
+    statistics->write_row(row);
     const unsigned int interval = output_parameters.vtu_interval;
     if (interval > 0 && (force_vtu || step % interval == 0))
-      solution_writer->write(dof_handler, *mechanics, u, v, time, step);
+      {
+        solution_writer->write(dof_handler, *mechanics, u, v, time, step);
+        if (contact)
+          contact->write_output(output_parameters.directory, step);
+      }
 
     if (step > 0)
       pcout << "Step " << std::setw(5) << step << "  t = " << std::setw(10)

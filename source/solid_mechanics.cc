@@ -24,7 +24,13 @@ namespace ContactDynamics
         , grad_v(quadrature.size())
         , v(quadrature.size())
         , a(quadrature.size())
-      {}
+      {
+        // only the displacement components carry mass and stiffness
+        const auto &fe = dof_handler.get_fe();
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          if (fe.system_to_component_index(i).first < dim)
+            u_local.push_back(i);
+      }
 
       void
       reinit(const typename DoFHandler<dim>::active_cell_iterator &cell)
@@ -37,6 +43,7 @@ namespace ContactDynamics
       FEValues<dim>                    fe_values;
       const FEValuesExtractors::Vector displacement;
       std::vector<types::global_dof_index> dofs;
+      std::vector<unsigned int>        u_local;
       std::vector<Tensor<2, dim>>      grad_u, grad_v;
       std::vector<Tensor<1, dim>>      v, a;
     };
@@ -137,7 +144,7 @@ namespace ContactDynamics
                                        symmetrize(f.grad_v[q]));
                 }
               const double JxW = f.fe_values.JxW(q);
-              for (unsigned int i = 0; i < n; ++i)
+              for (const unsigned int i : f.u_local)
                 {
                   phi[i] = f.fe_values[f.displacement].value(i, q);
                   grad_phi[i] =
@@ -152,11 +159,11 @@ namespace ContactDynamics
               if (dynamic && beta > 0)
                 tangent += (c_v * beta) * material.reference_elasticity();
               const double mass_factor = rho * (c_a + alpha * c_v);
-              for (unsigned int j = 0; j < n; ++j)
+              for (const unsigned int j : f.u_local)
                 tangent_grad_phi[j] =
                   double_contract<2, 0, 3, 1>(tangent, grad_phi[j]);
-              for (unsigned int i = 0; i < n; ++i)
-                for (unsigned int j = 0; j < n; ++j)
+              for (const unsigned int i : f.u_local)
+                for (const unsigned int j : f.u_local)
                   cell_matrix(i, j) +=
                     (scalar_product(grad_phi[i], tangent_grad_phi[j]) +
                      mass_factor * (phi[i] * phi[j])) *
@@ -212,8 +219,8 @@ namespace ContactDynamics
           const double rho = bodies[cell->material_id()].material.density;
           cell_matrix      = 0;
           for (unsigned int q = 0; q < f.quadrature.size(); ++q)
-            for (unsigned int i = 0; i < n; ++i)
-              for (unsigned int j = 0; j < n; ++j)
+            for (const unsigned int i : f.u_local)
+              for (const unsigned int j : f.u_local)
                 cell_matrix(i, j) +=
                   rho *
                   (f.fe_values[f.displacement].value(i, q) *
@@ -252,7 +259,7 @@ namespace ContactDynamics
             b[d] = body.body_force[d];
           cell_rhs = 0;
           for (unsigned int q = 0; q < f.quadrature.size(); ++q)
-            for (unsigned int i = 0; i < n; ++i)
+            for (const unsigned int i : f.u_local)
               cell_rhs(i) += b * f.fe_values[f.displacement].value(i, q) *
                              f.fe_values.JxW(q);
           force.add(f.dofs, cell_rhs);

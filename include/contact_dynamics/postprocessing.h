@@ -50,7 +50,9 @@ namespace ContactDynamics
   class SolutionWriter
   {
   public:
-    SolutionWriter(const std::string &directory);
+    /** `extra_names` name the components after the displacement. */
+    SolutionWriter(const std::string              &directory,
+                   const std::vector<std::string> &extra_names = {});
 
     void
     write(const DoFHandler<dim>      &dof_handler,
@@ -62,6 +64,7 @@ namespace ContactDynamics
 
   private:
     std::string                               directory;
+    std::vector<std::string>                  extra_names;
     std::vector<std::pair<double, std::string>> records;
   };
 } // namespace ContactDynamics

@@ -17,6 +17,7 @@
 
 #include <contact_dynamics/bodies.h>
 #include <contact_dynamics/boundary_conditions.h>
+#include <contact_dynamics/contact/contact_formulation.h>
 #include <contact_dynamics/nonlinear_solver.h>
 #include <contact_dynamics/postprocessing.h>
 #include <contact_dynamics/scene.h>
@@ -90,6 +91,20 @@ namespace ContactDynamics
       return dof_handler;
     }
 
+    /** Dirichlet and unused-multiplier constraints (homogeneous). */
+    const AffineConstraints<double> &
+    get_constraints() const
+    {
+      return increment_constraints;
+    }
+
+    /** The contact formulation, or nullptr without contact. */
+    const ContactFormulation<dim> *
+    get_contact() const
+    {
+      return contact.get();
+    }
+
     const VectorType &
     displacement() const
     {
@@ -129,9 +144,13 @@ namespace ContactDynamics
     apply_update(const VectorType &increment) override;
     bool
     jacobian_is_constant() const override;
+    bool
+    converged() const override;
 
     void
     setup_system();
+    void
+    setup_sparsity();
     void
     apply_initial_conditions();
     void
@@ -158,7 +177,8 @@ namespace ContactDynamics
     double                      minimum_time_step;
 
     Triangulation<dim>                   triangulation;
-    FESystem<dim>                        fe;
+    std::unique_ptr<ContactFormulation<dim>> contact;
+    std::unique_ptr<FESystem<dim>>       fe;
     DoFHandler<dim>                      dof_handler;
     IndexSet                             locally_owned;
     AffineConstraints<double>            increment_constraints;

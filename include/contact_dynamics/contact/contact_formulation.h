@@ -1,0 +1,140 @@
+// The interface every contact formulation implements, and the parameters
+// of the `Contact` subsection that all formulations share.
+#ifndef contact_dynamics_contact_contact_formulation_h
+#define contact_dynamics_contact_contact_formulation_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <contact_dynamics/scene.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ContactDynamics
+{
+  using namespace dealii;
+  using VectorType = TrilinosWrappers::MPI::Vector;
+  using MatrixType = TrilinosWrappers::SparseMatrix;
+
+  /** One secondary/primary surface pair; a side may join several surfaces. */
+  struct ContactPair
+  {
+    std::vector<types::boundary_id> secondary;
+    std::vector<types::boundary_id> primary;
+    std::string                     name; // "secondary: primary" as written
+  };
+
+  struct ContactParameters
+  {
+    std::string              formulation = "none";
+    std::vector<ContactPair> pairs;
+    std::vector<Point<2>>    monitored_points;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm, const SceneLayout &layout);
+  };
+
+  /** What the time integrator tells a formulation about the trial state. */
+  struct TrialState
+  {
+    const VectorType &u;       // displacement (and multipliers) at t_{n+1}
+    const VectorType &v;       // Newmark velocity at t_{n+1}
+    double            c_v;     // d v / d u
+    double            dt;      // time step size
+    bool              dynamic; // false for quasi-static
+  };
+
+  template <int dim>
+  class ContactFormulation
+  {
+  public:
+    virtual ~ContactFormulation() = default;
+
+    /** Vector components the formulation adds to the displacement. */
+    virtual unsigned int
+    n_extra_components() const = 0;
+
+    /** Names of the extra components in the output. */
+    virtual std::vector<std::string>
+    extra_component_names() const = 0;
+
+    /** After distribute_dofs: surfaces and degree-of-freedom maps. */
+    virtual void
+    setup(const DoFHandler<dim> &dof_handler) = 0;
+
+    /** Extra degrees of freedom held at zero (homogeneous constraints). */
+    virtual void
+    add_constraints(AffineConstraints<double> &constraints) const = 0;
+
+    /**
+     * Updates the candidate pairs for the trial displacement; true if the
+     * sparsity pattern must be rebuilt.
+     */
+    virtual bool
+    update_candidates(const VectorType &u) = 0;
+
+    virtual void
+    add_sparsity(DynamicSparsityPattern &dsp) const = 0;
+
+    /**
+     * Adds the contact residual and, if asked, Jacobian; rows and columns
+     * of constrained degrees of freedom are skipped. `residual_full`
+     * receives the contact forces on all displacement degrees of freedom.
+     */
+    virtual void
+    assemble(const TrialState                &state,
+             const AffineConstraints<double> &constraints,
+             const bool                       with_jacobian,
+             VectorType                      &residual,
+             MatrixType                      &jacobian,
+             VectorType                      &residual_full) = 0;
+
+    /** False while the active set still changes between iterations. */
+    virtual bool
+    active_set_converged() const = 0;
+
+    /** Degrees of freedom whose predictor is their old value. */
+    virtual const std::vector<types::global_dof_index> &
+    multiplier_dofs() const = 0;
+
+    /**
+     * The step to `time` converged at the state of the last assemble():
+     * keep the history the next step needs; `old_u` is the state before.
+     */
+    virtual void
+    commit_step(const VectorType &old_u, const double time) = 0;
+
+    virtual std::vector<std::string>
+    statistics_columns() const = 0;
+
+    virtual std::vector<double>
+    statistics() const = 0;
+
+    /** Surface CSV files etc. at an output time. */
+    virtual void
+    write_output(const std::string &directory, const unsigned int step) = 0;
+  };
+
+  template <int dim>
+  std::unique_ptr<ContactFormulation<dim>>
+  create_contact_formulation(ParameterHandler  &prm,
+                             const SceneLayout &layout,
+                             const std::string &output_directory);
+
+  /** Declares the `Contact` subsection with every formulation's entries. */
+  void
+  declare_contact_parameters(ParameterHandler &prm);
+} // namespace ContactDynamics
+
+#endif

@@ -1,0 +1,149 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <contact_dynamics/contact/contact_formulation.h>
+#include <contact_dynamics/contact/mortar_contact.h>
+
+#include <sstream>
+
+namespace ContactDynamics
+{
+  void
+  ContactParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Formulation",
+                      "none",
+                      Patterns::Selection("none|mortar"),
+                      "'none': the bodies do not interact (no multiplier "
+                      "unknowns, no cost). 'mortar': dual mortar "
+                      "segment-to-segment contact with Lagrange multipliers "
+                      "on the secondary surfaces (2-D).");
+    prm.declare_entry(
+      "Pairs",
+      "",
+      Patterns::Anything(),
+      "Contact pairs 'secondary: primary', separated by ';'. A side may join "
+      "several surfaces with '+', e.g. 'tool_arc + tool_sides: "
+      "substrate_top'. The secondary side carries the multipliers: choose the "
+      "finer surface.");
+    prm.declare_entry("Monitored points",
+                      "",
+                      Patterns::Anything(),
+                      "Points 'x, y' separated by ';' (reference "
+                      "coordinates); the nearest secondary node of each is "
+                      "written to contact_history.csv at every step.");
+  }
+
+  void
+  ContactParameters::parse_parameters(ParameterHandler  &prm,
+                                      const SceneLayout &layout)
+  {
+    formulation = prm.get("Formulation");
+    pairs.clear();
+    const auto side = [&](const std::string &text, const std::string &entry) {
+      std::vector<types::boundary_id> ids;
+      for (const auto &name : Utilities::split_string_list(text, '+'))
+        {
+          try
+            {
+              ids.push_back(layout.surface_id(name));
+            }
+          catch (const ExceptionBase &e)
+            {
+              std::ostringstream message;
+              e.print_info(message);
+              AssertThrow(false,
+                          ExcMessage("In 'Contact/Pairs', entry '" + entry +
+                                     "': " + Utilities::trim(message.str())));
+            }
+        }
+      AssertThrow(!ids.empty(),
+                  ExcMessage("In 'Contact/Pairs', the entry '" + entry +
+                             "' has an empty side."));
+      return ids;
+    };
+    for (const auto &entry : Utilities::split_string_list(prm.get("Pairs"), ';'))
+      {
+        const auto colon = entry.find(':');
+        AssertThrow(colon != std::string::npos,
+                    ExcMessage("In 'Contact/Pairs', the entry '" + entry +
+                               "' is not of the form 'secondary: primary'."));
+        ContactPair pair;
+        pair.secondary = side(entry.substr(0, colon), entry);
+        pair.primary   = side(entry.substr(colon + 1), entry);
+        pair.name      = entry;
+        for (const auto id : pair.secondary)
+          AssertThrow(std::find(pair.primary.begin(), pair.primary.end(), id) ==
+                        pair.primary.end(),
+                      ExcMessage("In 'Contact/Pairs', the entry '" + entry +
+                                 "' has a surface on both sides."));
+        pairs.push_back(pair);
+      }
+    AssertThrow(formulation == "none" || !pairs.empty(),
+                ExcMessage("Contact/Formulation = " + formulation +
+                           " needs at least one pair in 'Contact/Pairs'."));
+
+    monitored_points.clear();
+    for (const auto &text :
+         Utilities::split_string_list(prm.get("Monitored points"), ';'))
+      {
+        const auto xy = Utilities::split_string_list(text, ',');
+        AssertThrow(xy.size() == 2,
+                    ExcMessage("In 'Contact/Monitored points', '" + text +
+                               "' is not a point 'x, y'."));
+        try
+          {
+            monitored_points.emplace_back(Utilities::string_to_double(xy[0]),
+                                          Utilities::string_to_double(xy[1]));
+          }
+        catch (...)
+          {
+            AssertThrow(false,
+                        ExcMessage("In 'Contact/Monitored points', '" + text +
+                                   "' is not a point 'x, y'."));
+          }
+      }
+  }
+
+  void
+  declare_contact_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    ContactParameters::declare_parameters(prm);
+    prm.enter_subsection("Mortar");
+    MortarParameters::declare_parameters(prm);
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  std::unique_ptr<ContactFormulation<dim>>
+  create_contact_formulation(ParameterHandler  &prm,
+                             const SceneLayout &layout,
+                             const std::string &output_directory)
+  {
+    prm.enter_subsection("Contact");
+    ContactParameters contact;
+    contact.parse_parameters(prm, layout);
+    prm.enter_subsection("Mortar");
+    MortarParameters mortar;
+    mortar.parse_parameters(prm);
+    prm.leave_subsection();
+    prm.leave_subsection();
+
+    if (contact.formulation == "none")
+      return nullptr;
+    auto formulation = std::make_unique<MortarContact<dim>>(contact, mortar);
+    formulation->set_output_directory(output_directory);
+    return formulation;
+  }
+
+  template std::unique_ptr<ContactFormulation<2>>
+  create_contact_formulation<2>(ParameterHandler &,
+                                const SceneLayout &,
+                                const std::string &);
+  template std::unique_ptr<ContactFormulation<3>>
+  create_contact_formulation<3>(ParameterHandler &,
+                                const SceneLayout &,
+                                const std::string &);
+} // namespace ContactDynamics

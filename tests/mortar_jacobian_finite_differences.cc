@@ -1,0 +1,185 @@
+// The mortar contact Jacobian (automatic differentiation through nodal
+// normals, projections and segment end points) against central finite
+// differences of the residual, on the non-matching patch-test interface:
+// in contact (tilted penetration, random multipliers), out of contact (open
+// gap, multipliers below c_n times the gap: every node inactive), and
+// with the persistency (gap velocity) condition after an impact. The
+// 'approximate' Jacobian, which drops the geometric derivatives, must
+// differ from the finite differences in contact.
+#include <contact_dynamics/contact/mortar_contact.h>
+#include <contact_dynamics/simulator.h>
+
+#include "tests.h"
+
+#include <random>
+
+using namespace dealii;
+using ContactDynamics::VectorType;
+
+namespace
+{
+  std::string
+  parameters(const std::string &jacobian,
+             const std::string &scheme,
+             const std::string &initial_displacement,
+             const std::string &initial_velocity)
+  {
+    return R"(
+subsection Scene
+  set Scene = patch test
+end
+subsection Body upper
+  set Material model = neo-Hookean
+  set Young's modulus = 1000
+  set Poisson's ratio = 0.3
+  set Density = 1
+  set Rayleigh stiffness coefficient = 0.01
+  set Initial displacement = )" +
+           initial_displacement + R"(
+  set Initial velocity = )" +
+           initial_velocity + R"(
+end
+subsection Body lower
+  set Material model = neo-Hookean
+  set Young's modulus = 3000
+  set Poisson's ratio = 0.2
+  set Density = 1
+end
+subsection Boundary conditions
+  set Dirichlet = lower_bottom: xy: 0
+end
+subsection Time integration
+  set Scheme = )" +
+           scheme + R"(
+  set Time step = 0.01
+end
+subsection Contact
+  set Formulation = mortar
+  set Pairs = upper_bottom: lower_top
+  subsection Mortar
+    set c_n = 1000
+    set Jacobian = )" +
+           jacobian + R"(
+  end
+end
+subsection Output
+  set Output directory = output_mortar_jacobian
+  set VTU interval = 0
+end
+)";
+  }
+
+  // relative error of J d against central differences of R along d
+  double
+  fd_error(ContactDynamics::Simulator<2> &simulator,
+           const VectorType              &trial,
+           const VectorType              &direction,
+           const double                   dt)
+  {
+    VectorType r_plus(trial), r_minus(trial), r(trial), jd(trial);
+    const double h = 1e-7;
+    VectorType   shifted(trial);
+    shifted.add(h, direction);
+    simulator.residual_and_jacobian(shifted, dt, r_plus);
+    shifted.add(-2 * h, direction);
+    simulator.residual_and_jacobian(shifted, dt, r_minus);
+    const auto &J = simulator.residual_and_jacobian(trial, dt, r);
+    J.vmult(jd, direction);
+    r_plus -= r_minus;
+    r_plus /= 2 * h;
+    const double norm = jd.l2_norm();
+    r_plus -= jd;
+    return r_plus.l2_norm() / norm;
+  }
+
+  void
+  check(const std::string &name,
+        const std::string &jacobian,
+        const std::string &scheme,
+        const std::string &u0,
+        const std::string &v0,
+        const unsigned int steps,
+        const bool         expect_match,
+        const double       lambda_scale = 200)
+  {
+    ParameterHandler prm;
+    read_test_parameters("jacobian.prm", parameters(jacobian, scheme, u0, v0),
+                         prm);
+    std::ostringstream            screen;
+    ContactDynamics::Simulator<2> simulator(prm, screen);
+    simulator.initialize();
+    for (unsigned int s = 0; s < steps; ++s)
+      if (!simulator.advance(0.01))
+        check_true(name + ": step converged", false);
+
+    std::mt19937                           rng(7);
+    std::uniform_real_distribution<double> uniform(-1., 1.);
+    VectorType trial(simulator.displacement()), direction(trial);
+    const auto &multipliers = simulator.get_contact()->multiplier_dofs();
+    std::set<types::global_dof_index> lambda(multipliers.begin(),
+                                             multipliers.end());
+    for (unsigned int i = 0; i < trial.size(); ++i)
+      {
+        if (lambda.count(i))
+          {
+            if (steps == 0)
+              trial(i) = lambda_scale * (1.5 + uniform(rng));
+            direction(i) = 100 * uniform(rng);
+          }
+        else
+          {
+            trial(i) += 1e-4 * uniform(rng);
+            direction(i) = 1e-3 * uniform(rng);
+          }
+      }
+    // no perturbation of held degrees of freedom (Dirichlet, unused
+    // multipliers): their rows are identities
+    simulator.get_constraints().set_zero(direction);
+    const double error = fd_error(simulator, trial, direction, 0.01);
+    const auto *mortar = dynamic_cast<const ContactDynamics::MortarContact<2> *>(
+      simulator.get_contact());
+    unsigned int n_active = 0, n_persistent = 0;
+    for (const auto &node : mortar->node_states(0))
+      {
+        n_active += node.active;
+        n_persistent += node.persistent;
+      }
+    deallog << name << ": active nodes " << n_active << ", persistent nodes "
+            << n_persistent << std::endl;
+    if (expect_match)
+      check_close(name + ": |J d - FD| / |J d|", error, 0., 1e-6);
+    else
+      check_true(name + ": differs from FD by more than 1e-3",
+                 error > 1e-3);
+  }
+} // namespace
+
+int
+main()
+{
+  initlog();
+  const std::string tilted = "0.002*x; -0.003 + 0.002*x";
+  check("in contact, exact", "exact", "quasi-static", tilted, "0; 0", 0, true);
+  check("in contact, approximate",
+        "approximate",
+        "quasi-static",
+        tilted,
+        "0; 0",
+        0,
+        false);
+  check("out of contact, exact",
+        "exact",
+        "quasi-static",
+        "0; 0.01",
+        "0; 0",
+        0,
+        true,
+        2);
+  check("persistent contact after impact, exact",
+        "exact",
+        "newmark",
+        "0; 0.0015",
+        "0.02; -0.1",
+        4,
+        true);
+}
