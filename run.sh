@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 packages=(cmake g++ make libdeal.ii-dev numdiff perl openmpi-bin)
-default_prm=prm/bouncing_block/no_contact.prm
+default_prm=prm/bouncing_block/mortar_stabilized.prm
 jobs=$(nproc 2>/dev/null || echo 2)
 
 install_packages() {

@@ -217,6 +217,11 @@ namespace ContactDynamics
   bool
   MortarContact<dim>::update_candidates(const VectorType &u)
   {
+    if (gap_field.size() != u.size())
+      {
+        gap_field.reinit(u);
+        gap_field = 0;
+      }
     bool rebuild = false;
     for (auto &pair : pairs)
       {
@@ -640,13 +645,17 @@ namespace ContactDynamics
     contact_work += work;
     force_committed = force;
     committed_u     = *last_u;
+    gap_field       = 0;
     have_state      = true;
 
     for (auto &pair : pairs)
-      for (auto &node : pair.nodes)
+      for (unsigned int j = 0; j < pair.nodes.size(); ++j)
         {
+          NodeState &node = pair.nodes[j];
           node.gap_at_commit =
             node.projected ? node.weighted_gap / node.weight : 1e300;
+          if (node.projected)
+            gap_field(pair.secondary.dofs[j][dim]) = node.gap_at_commit;
           node.persistent = mortar.persistency && node.projected &&
                             node.gap_at_commit <= mortar.capture_tolerance;
         }

@@ -122,6 +122,49 @@ namespace ContactDynamics
     private:
       const SolidMechanics<dim> &mechanics;
     };
+
+    // One component of a vector as a scalar field.
+    template <int dim>
+    class ComponentField : public DataPostprocessorScalar<dim>
+    {
+    public:
+      ComponentField(const std::string &name, const unsigned int component)
+        : DataPostprocessorScalar<dim>(name, update_values)
+        , component(component)
+      {}
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<Vector<double>> &computed) const override
+      {
+        for (unsigned int q = 0; q < computed.size(); ++q)
+          computed[q](0) = inputs.solution_values[q](component);
+      }
+
+    private:
+      const unsigned int component;
+    };
+
+    // The displacement part (first dim components) of a vector.
+    template <int dim>
+    class DisplacementPart : public DataPostprocessorVector<dim>
+    {
+    public:
+      explicit DisplacementPart(const std::string &name)
+        : DataPostprocessorVector<dim>(name, update_values)
+      {}
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<Vector<double>> &computed) const override
+      {
+        for (unsigned int q = 0; q < computed.size(); ++q)
+          for (unsigned int d = 0; d < dim; ++d)
+            computed[q](d) = inputs.solution_values[q](d);
+      }
+    };
   } // namespace
 
 
@@ -140,27 +183,24 @@ namespace ContactDynamics
                              const VectorType          &displacement,
                              const VectorType          &velocity,
                              const double               time,
-                             const unsigned int         step)
+                             const unsigned int         step,
+                             const std::vector<std::pair<const VectorType *, std::string>>
+                               &nodal_fields)
   {
     const unsigned int n_components = dof_handler.get_fe().n_components();
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(n_components,
                      DataComponentInterpretation::component_is_scalar);
-    std::vector<std::string> u_names(n_components, "unused"),
-      v_names(n_components, "unused_v");
+    std::vector<std::string> u_names(n_components);
     for (unsigned int d = 0; d < dim; ++d)
       {
         interpretation[d] =
           DataComponentInterpretation::component_is_part_of_vector;
         u_names[d] = "displacement";
-        v_names[d] = "velocity";
       }
     for (unsigned int c = dim; c < n_components; ++c)
-      {
-        u_names[c] = c - dim < extra_names.size() ? extra_names[c - dim] :
-                                                    "field_" + std::to_string(c);
-        v_names[c] = u_names[c] + "_rate";
-      }
+      u_names[c] = c - dim < extra_names.size() ? extra_names[c - dim] :
+                                                  "field_" + std::to_string(c);
 
     StressPostprocessor<dim> stress(mechanics);
     DataOut<dim>             data_out;
@@ -169,11 +209,16 @@ namespace ContactDynamics
                              u_names,
                              DataOut<dim>::type_dof_data,
                              interpretation);
-    data_out.add_data_vector(velocity,
-                             v_names,
-                             DataOut<dim>::type_dof_data,
-                             interpretation);
+    const DisplacementPart<dim> velocity_field("velocity");
+    data_out.add_data_vector(velocity, velocity_field);
     data_out.add_data_vector(displacement, stress);
+    std::vector<std::unique_ptr<ComponentField<dim>>> fields;
+    for (const auto &field : nodal_fields)
+      {
+        fields.push_back(
+          std::make_unique<ComponentField<dim>>(field.second, dim));
+        data_out.add_data_vector(*field.first, *fields.back());
+      }
 
     Vector<float> material_id(dof_handler.get_triangulation().n_active_cells());
     for (const auto &cell : dof_handler.active_cell_iterators())

@@ -533,11 +533,7 @@ namespace ContactDynamics
     statistics->write_row(row);
     const unsigned int interval = output_parameters.vtu_interval;
     if (interval > 0 && (force_vtu || step % interval == 0))
-      {
-        solution_writer->write(dof_handler, *mechanics, u, v, time, step);
-        if (contact)
-          contact->write_output(output_parameters.directory, step);
-      }
+      write_solution();
 
     if (step > 0)
       pcout << "Step " << std::setw(5) << step << "  t = " << std::setw(10)
@@ -548,6 +544,23 @@ namespace ContactDynamics
             << energies.kinetic + energies.elastic
             << "  balance error = " << energies.error() << std::defaultfloat
             << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::write_solution()
+  {
+    solution_writer->write(
+      dof_handler,
+      *mechanics,
+      u,
+      v,
+      time,
+      step,
+      contact ? contact->nodal_output_fields() :
+                std::vector<std::pair<const VectorType *, std::string>>());
+    if (contact)
+      contact->write_output(output_parameters.directory, step);
   }
 
   template <int dim>
@@ -591,7 +604,7 @@ namespace ContactDynamics
           }
       }
     if (!last_step_wrote && output_parameters.vtu_interval > 0)
-      solution_writer->write(dof_handler, *mechanics, u, v, time, step);
+      write_solution();
 
     pcout << "Finished at t = " << time << " after " << step << " steps ("
           << cumulative_newton_iterations << " Newton iterations, "

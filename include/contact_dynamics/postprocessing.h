@@ -54,13 +54,20 @@ namespace ContactDynamics
     SolutionWriter(const std::string              &directory,
                    const std::vector<std::string> &extra_names = {});
 
+    /**
+     * `nodal_fields`: further vectors on the same degrees of freedom, each
+     * written as one scalar field: its component `dim` (the first one after
+     * the displacement), under the given name.
+     */
     void
-    write(const DoFHandler<dim>      &dof_handler,
-          const SolidMechanics<dim>  &mechanics,
-          const VectorType           &displacement,
-          const VectorType           &velocity,
-          const double                time,
-          const unsigned int          step);
+    write(const DoFHandler<dim>     &dof_handler,
+          const SolidMechanics<dim> &mechanics,
+          const VectorType          &displacement,
+          const VectorType          &velocity,
+          const double               time,
+          const unsigned int         step,
+          const std::vector<std::pair<const VectorType *, std::string>>
+            &nodal_fields = {});
 
   private:
     std::string                               directory;

@@ -156,6 +156,8 @@ namespace ContactDynamics
     void
     set_trial_velocity_and_acceleration();
     void
+    write_solution();
+    void
     output_step(const unsigned int newton_iterations,
                 const double       residual,
                 const bool         force_vtu);

@@ -121,6 +121,16 @@ namespace ContactDynamics
     virtual std::vector<double>
     statistics() const = 0;
 
+    /**
+     * Nodal fields for the VTU output: vectors on all degrees of freedom
+     * whose first multiplier component holds the value.
+     */
+    virtual std::vector<std::pair<const VectorType *, std::string>>
+    nodal_output_fields() const
+    {
+      return {};
+    }
+
     /** Surface CSV files etc. at an output time. */
     virtual void
     write_output(const std::string &directory, const unsigned int step) = 0;

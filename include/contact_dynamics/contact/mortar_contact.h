@@ -107,6 +107,12 @@ namespace ContactDynamics
     write_output(const std::string &directory,
                  const unsigned int step) override;
 
+    std::vector<std::pair<const VectorType *, std::string>>
+    nodal_output_fields() const override
+    {
+      return {{&gap_field, "weighted_gap"}};
+    }
+
     /** Per secondary node of a pair, for tests and output. */
     struct NodeState
     {
@@ -171,6 +177,7 @@ namespace ContactDynamics
     // contact forces (residual contributions) at the last assembly and at
     // the last committed step, for the contact work
     VectorType   force, force_committed, committed_u;
+    VectorType   gap_field; // normalized weighted gap at the multiplier dofs
     double       contact_work = 0;
     unsigned int n_active     = 0;
     double       total_force[2] = {0, 0};
