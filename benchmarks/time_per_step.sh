@@ -1,11 +1,18 @@
 #!/usr/bin/env bash
 # Time per step of a scene, median of repeated runs, with and without VTU
-# output. Usage: benchmarks/time_per_step.sh [FILE.prm] [REPEATS]
-# Writes benchmarks/results/time_per_step.csv and prints a Markdown table.
+# output. Usage: benchmarks/time_per_step.sh [FILE.prm] [REPEATS] [Entry=value ...]
+# where each Entry=value replaces the value of every 'set Entry = ...' line
+# (for example Jacobian=approximate). Writes benchmarks/results/
+# time_per_step.csv and prints a Markdown table row.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 prm="${1:-prm/bouncing_block/no_contact.prm}"
 repeats="${2:-5}"
+shift $(( $# > 2 ? 2 : $# ))
+overrides=()
+for o in "$@"; do
+  overrides+=(-e "s|^\( *set ${o%%=*} *=\).*|\1 ${o#*=}|")
+done
 [ -x build/contact-dynamics ] || ./run.sh build
 out=benchmarks/results
 mkdir -p "$out"
@@ -17,7 +24,7 @@ run_variant() { # name, vtu interval
   for r in $(seq 1 "$repeats"); do
     local dir="$out/run_${name}_$r"
     sed -e "s|^\( *set Output directory *=\).*|\1 $dir|" \
-        -e "s|^\( *set VTU interval *=\).*|\1 $vtu|" "$prm" > "$out/run.prm"
+        -e "s|^\( *set VTU interval *=\).*|\1 $vtu|" "${overrides[@]}" "$prm" > "$out/run.prm"
     build/contact-dynamics "$out/run.prm" > "$out/run_${name}_$r.log"
     tail -1 "$dir/statistics.csv" | awk -F, -v n="$name" -v r="$r" \
       '{printf "%s,%d,%d,%d,%.4f,%.3f\n", n, r, $1, $5, $11, 1000*$11/$1}' >> "$csv"
@@ -35,5 +42,6 @@ steps=$(grep "^no_vtu," "$csv" | head -1 | cut -d, -f3)
 its=$(grep "^no_vtu," "$csv" | head -1 | cut -d, -f4)
 echo "| scene file | steps | Newton iterations | median ms/step, no VTU | median ms/step, VTU every 4 steps | ratio |"
 echo "|---|---|---|---|---|---|"
-awk -v p="$prm" -v s="$steps" -v i="$its" -v a="$m0" -v b="$m4" \
+label="$prm${*:+ ($*)}"
+awk -v p="$label" -v s="$steps" -v i="$its" -v a="$m0" -v b="$m4" \
   'BEGIN {printf "| %s | %d | %d | %.2f | %.2f | %.2f |\n", p, s, i, a, b, b/a}'

@@ -60,6 +60,9 @@ end
               worst / initial,
               0.,
               1e-10);
+  // informational (numdiff compares values below 1e-6 as equal)
+  dealii::deallog << "measured relative drift: " << worst / initial
+                  << std::endl;
   check_close("relative energy balance error",
               simulator.energy().error() / initial,
               0.,
