@@ -64,7 +64,7 @@ namespace
         const auto &nodes = mortar_of(simulator).node_states(0);
         for (unsigned int j = 0; j < nodes.size(); ++j)
           {
-            const double gap = nodes[j].weighted_gap / nodes[j].weight;
+            const double gap = nodes[j].normalized_gap();
             if (nodes[j].active && first_contact < 0)
               first_contact = simulator.current_time();
             // held by the velocity condition in this and the last step (the
@@ -150,7 +150,7 @@ end
         const auto &nodes = mortar_of(simulator).node_states(0);
         for (unsigned int j = 0; j < nodes.size(); ++j)
           {
-            const double gap = nodes[j].weighted_gap / nodes[j].weight;
+            const double gap = nodes[j].normalized_gap();
             if (step > 20 && held[j] && nodes[j].persistent && nodes[j].active)
               {
                 worst = std::max(worst, std::abs(gap - previous[j]));

@@ -172,8 +172,8 @@ end
     const auto &s     = mortar->secondary_surface(0);
     const auto &nodes = mortar->node_states(0);
     return s.reference[0][0] < s.reference[1][0] ?
-             std::make_pair(nodes[0].weighted_gap, nodes[1].weighted_gap) :
-             std::make_pair(nodes[1].weighted_gap, nodes[0].weighted_gap);
+             std::make_pair(nodes[0].gap, nodes[1].gap) :
+             std::make_pair(nodes[1].gap, nodes[0].gap);
   }
 } // namespace
 

@@ -1,0 +1,233 @@
+// What the contact formulations with nodal Lagrange multipliers on the
+// secondary surface share: surfaces, search, multiplier unknowns, the
+// nonlinear complementarity function solved by semi-smooth Newton (with
+// optional persistency), the contact work and the outputs. A formulation
+// only says how one "patch" (a secondary face for mortar, a secondary node
+// for node-to-segment) contributes forces and nodal gaps.
+#ifndef contact_dynamics_contact_surface_contact_h
+#define contact_dynamics_contact_surface_contact_h
+
+#include <deal.II/base/bounding_box.h>
+
+#include <contact_dynamics/contact/contact_formulation.h>
+#include <contact_dynamics/contact/contact_surface.h>
+
+#include <fstream>
+#include <map>
+#include <memory>
+
+namespace ContactDynamics
+{
+  /** Parameters of the complementarity condition, per formulation. */
+  struct ComplementarityParameters
+  {
+    double c_n               = 1e6;
+    bool   normalize_c_n     = true;
+    bool   persistency       = true;
+    double capture_tolerance = 1e-5;
+    bool   exact_jacobian    = true;
+
+    /** Declares the entries with the given default stabilization. */
+    static void
+    declare_parameters(ParameterHandler  &prm,
+                       const std::string &default_stabilization);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** A value and its derivatives with respect to global unknowns. */
+  struct LinearizedValue
+  {
+    double                                    value = 0;
+    std::map<types::global_dof_index, double> derivatives;
+  };
+
+  template <int dim>
+  class SurfaceContact : public ContactFormulation<dim>
+  {
+  public:
+    SurfaceContact(const ContactParameters         &contact,
+                   const ComplementarityParameters &complementarity);
+
+    void
+    set_output_directory(const std::string &dir)
+    {
+      directory = dir;
+    }
+
+    unsigned int
+    n_extra_components() const override
+    {
+      return dim;
+    }
+
+    std::vector<std::string>
+    extra_component_names() const override;
+
+    void
+    setup(const DoFHandler<dim> &dof_handler) override;
+
+    void
+    add_constraints(AffineConstraints<double> &constraints) const override;
+
+    bool
+    update_candidates(const VectorType &u) override;
+
+    void
+    add_sparsity(DynamicSparsityPattern &dsp) const override;
+
+    void
+    assemble(const TrialState                &state,
+             const AffineConstraints<double> &constraints,
+             const bool                       with_jacobian,
+             VectorType                      &residual,
+             MatrixType                      &jacobian,
+             VectorType                      &residual_full) override;
+
+    bool
+    active_set_converged() const override
+    {
+      return !active_set_changed;
+    }
+
+    const std::vector<types::global_dof_index> &
+    multiplier_dofs() const override
+    {
+      return normal_multiplier_dofs;
+    }
+
+    void
+    commit_step(const VectorType &old_u, const double time) override;
+
+    std::vector<std::string>
+    statistics_columns() const override;
+
+    std::vector<double>
+    statistics() const override;
+
+    void
+    write_output(const std::string &directory,
+                 const unsigned int step) override;
+
+    std::vector<std::pair<const VectorType *, std::string>>
+    nodal_output_fields() const override
+    {
+      return {{&gap_field, "normal_gap"}};
+    }
+
+    /** Per secondary node of a pair, for tests and output. */
+    struct NodeState
+    {
+      double gap        = 0; // weighted (mortar) or pointwise gap
+      double weight     = 0; // its normalization; 0: no projection
+      double pressure   = 0; // lambda_n
+      bool   projected  = false;
+      bool   active     = false;
+      bool   persistent = false; // velocity-level condition next step
+
+      /** The gap in length units. */
+      double
+      normalized_gap() const
+      {
+        return projected ? gap / weight : 0.;
+      }
+    };
+
+    const std::vector<NodeState> &
+    node_states(const unsigned int pair) const
+    {
+      return pairs[pair].nodes;
+    }
+
+    const ContactSurface<dim> &
+    secondary_surface(const unsigned int pair) const
+    {
+      return pairs[pair].secondary;
+    }
+
+  protected:
+    struct PairData
+    {
+      ContactSurface<dim>                    secondary, primary;
+      std::vector<std::vector<unsigned int>> candidates; // per patch
+      std::vector<std::vector<unsigned int>> pattern;    // in the sparsity
+      std::vector<NodeState>                 nodes;
+      // per secondary node: gap, its normalization weight, gap rate
+      std::vector<LinearizedValue> gap, weight, gap_rate;
+    };
+
+    /** Number of patches of a pair (faces or nodes of the secondary side). */
+    virtual unsigned int
+    n_patches(const PairData &pair) const = 0;
+
+    /** Box around a patch in the configuration u, before enlarging. */
+    virtual BoundingBox<dim>
+    patch_box(const PairData &pair, const unsigned int patch,
+              const VectorType &u, double &size) const = 0;
+
+    /** Secondary nodes whose gaps a patch contributes to. */
+    virtual std::vector<unsigned int>
+    patch_nodes(const PairData &pair, const unsigned int patch) const = 0;
+
+    /** Unknowns a patch's contributions depend on, given primary faces. */
+    virtual std::vector<types::global_dof_index>
+    patch_unknowns(const PairData                  &pair,
+                   const unsigned int               patch,
+                   const std::vector<unsigned int> &primary_faces) const = 0;
+
+    /**
+     * Adds a patch's forces (with add_force()) and its contributions to
+     * pair.gap, pair.weight, pair.gap_rate of its nodes.
+     */
+    virtual void
+    assemble_patch(PairData                        &pair,
+                   const unsigned int               patch,
+                   const TrialState                &state,
+                   const AffineConstraints<double> &constraints,
+                   const bool                       with_jacobian,
+                   VectorType                      &residual,
+                   MatrixType                      &jacobian,
+                   VectorType                      &residual_full) = 0;
+
+    /** A residual row of a contact force with its derivatives. */
+    void
+    add_force(const types::global_dof_index               row,
+              const double                                value,
+              const std::vector<std::pair<types::global_dof_index, double>>
+                                                &derivatives,
+              const AffineConstraints<double> &constraints,
+              const bool                       with_jacobian,
+              VectorType                      &residual,
+              MatrixType                      &jacobian,
+              VectorType                      &residual_full);
+
+    ContactParameters         contact;
+    ComplementarityParameters complementarity;
+    std::vector<PairData>     pairs;
+
+  private:
+    std::vector<std::vector<unsigned int>>
+    compute_candidates(const PairData   &pair,
+                       const VectorType &u,
+                       const double      margin_factor) const;
+
+    std::vector<types::global_dof_index> normal_multiplier_dofs;
+    std::vector<types::global_dof_index> other_multiplier_dofs;
+    bool                                 active_set_changed = true;
+
+    // contact forces at the last assembly and at the last committed step
+    VectorType   force, force_committed, committed_u;
+    VectorType   gap_field; // normalized gap at the multiplier dofs
+    double       contact_work   = 0;
+    unsigned int n_active       = 0;
+    double       total_force[2] = {0, 0};
+    bool         have_state     = false;
+    const VectorType *last_u    = nullptr;
+
+    std::vector<std::pair<unsigned int, unsigned int>> monitored; // pair, node
+    std::unique_ptr<std::ofstream>                     history;
+    std::string                                        directory;
+  };
+} // namespace ContactDynamics
+
+#endif

@@ -1,0 +1,461 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <contact_dynamics/contact/contact_search.h>
+#include <contact_dynamics/contact/surface_contact.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <set>
+
+namespace ContactDynamics
+{
+  void
+  ComplementarityParameters::declare_parameters(
+    ParameterHandler  &prm,
+    const std::string &default_stabilization)
+  {
+    prm.declare_entry("c_n",
+                      "1e6",
+                      Patterns::Double(1e-300),
+                      "Complementarity constant c_n > 0 in C_j = lambda_j - "
+                      "max(0, lambda_j - c_n g_j). It changes the Newton "
+                      "path, not the solution; pick it within a few orders "
+                      "of magnitude of E / h (stress / length).");
+    prm.declare_entry("Normalize c_n",
+                      "true",
+                      Patterns::Bool(),
+                      "Mortar: divide the weighted gap by the nodal weight "
+                      "integral(N_j) over the covered segments, so that c_n "
+                      "does not depend on the mesh size (units stress / "
+                      "length). The node-to-segment gap is a length already.");
+    prm.declare_entry("Stabilization",
+                      default_stabilization,
+                      Patterns::Selection("none|persistency"),
+                      "'persistency': a node in contact at the end of the "
+                      "previous step (gap <= Capture tolerance) enforces the "
+                      "gap velocity (Newmark-discretized) instead of the gap, "
+                      "so the penetration does not change and contact creates "
+                      "no energy ('stabilized' mortar of the paper). 'none': "
+                      "the gap is enforced at every step ('static').");
+    prm.declare_entry("Capture tolerance",
+                      "1e-5",
+                      Patterns::Double(0),
+                      "A node whose (normalized) gap, in length units, is at "
+                      "most this value at the end of a step counts as in "
+                      "contact for the persistency condition of the next "
+                      "step (>= 0).");
+    prm.declare_entry("Jacobian",
+                      "exact",
+                      Patterns::Selection("exact|approximate"),
+                      "'exact': automatic differentiation through normals, "
+                      "projections and segment end points. 'approximate': "
+                      "those geometric derivatives are dropped, as in the "
+                      "paper's code (more Newton iterations).");
+  }
+
+  void
+  ComplementarityParameters::parse_parameters(ParameterHandler &prm)
+  {
+    c_n               = prm.get_double("c_n");
+    normalize_c_n     = prm.get_bool("Normalize c_n");
+    persistency       = prm.get("Stabilization") == "persistency";
+    capture_tolerance = prm.get_double("Capture tolerance");
+    exact_jacobian    = prm.get("Jacobian") == "exact";
+  }
+
+
+
+  template <int dim>
+  SurfaceContact<dim>::SurfaceContact(
+    const ContactParameters         &contact,
+    const ComplementarityParameters &complementarity)
+    : contact(contact)
+    , complementarity(complementarity)
+  {
+    AssertThrow(dim == 2,
+                ExcMessage("Contact is implemented in 2-D only; set "
+                           "Dimension = 2 or Contact/Formulation = none."));
+  }
+
+  template <int dim>
+  std::vector<std::string>
+  SurfaceContact<dim>::extra_component_names() const
+  {
+    std::vector<std::string> names{"contact_pressure", "tangential_traction"};
+    names.resize(dim, "tangential_traction_2");
+    return names;
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::setup(const DoFHandler<dim> &dof_handler)
+  {
+    pairs.clear();
+    pairs.resize(contact.pairs.size());
+    std::set<types::global_dof_index> secondary_normal;
+    for (unsigned int p = 0; p < contact.pairs.size(); ++p)
+      {
+        auto &pair = pairs[p];
+        pair.secondary.build(dof_handler, contact.pairs[p].secondary, 2 * dim);
+        pair.primary.build(dof_handler, contact.pairs[p].primary, dim);
+        AssertThrow(pair.secondary.n_faces() > 0 && pair.primary.n_faces() > 0,
+                    ExcMessage("The contact pair '" + contact.pairs[p].name +
+                               "' has an empty surface."));
+        pair.nodes.assign(pair.secondary.n_nodes(), NodeState());
+        for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
+          secondary_normal.insert(pair.secondary.dofs[j][dim]);
+      }
+    normal_multiplier_dofs.assign(secondary_normal.begin(),
+                                  secondary_normal.end());
+
+    // every other multiplier unknown is held at zero (frictionless)
+    other_multiplier_dofs.clear();
+    std::vector<bool> mask(2 * dim, false);
+    for (unsigned int c = dim; c < 2 * dim; ++c)
+      mask[c] = true;
+    for (const auto i :
+         DoFTools::extract_dofs(dof_handler, ComponentMask(mask)))
+      if (secondary_normal.count(i) == 0)
+        other_multiplier_dofs.push_back(i);
+
+    // monitored points: the nearest secondary node of any pair
+    monitored.clear();
+    for (const auto &point : contact.monitored_points)
+      {
+        double                                best = 1e300;
+        std::pair<unsigned int, unsigned int> where{0, 0};
+        for (unsigned int p = 0; p < pairs.size(); ++p)
+          for (unsigned int j = 0; j < pairs[p].secondary.n_nodes(); ++j)
+            {
+              double d = 0;
+              for (unsigned int k = 0; k < 2; ++k)
+                d += std::pow(pairs[p].secondary.reference[j][k] - point[k], 2);
+              if (d < best)
+                {
+                  best  = d;
+                  where = {p, j};
+                }
+            }
+        monitored.push_back(where);
+      }
+    if (!directory.empty())
+      {
+        history = std::make_unique<std::ofstream>(directory +
+                                                  "/contact_history.csv");
+        *history << "time";
+        for (const auto &m : monitored)
+          {
+            const Point<dim> &X = pairs[m.first].secondary.reference[m.second];
+            *history << ",pressure(" << X[0] << " " << X[1] << ")"
+                     << ",gap(" << X[0] << " " << X[1] << ")";
+          }
+        *history << std::endl;
+      }
+    have_state         = false;
+    contact_work       = 0;
+    active_set_changed = true;
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::add_constraints(
+    AffineConstraints<double> &constraints) const
+  {
+    for (const auto i : other_multiplier_dofs)
+      if (!constraints.is_constrained(i))
+        constraints.add_line(i);
+  }
+
+  template <int dim>
+  std::vector<std::vector<unsigned int>>
+  SurfaceContact<dim>::compute_candidates(const PairData   &pair,
+                                          const VectorType &u,
+                                          const double margin_factor) const
+  {
+    std::vector<BoundingBox<dim>> secondary, primary;
+    for (unsigned int p = 0; p < n_patches(pair); ++p)
+      {
+        double size = 0;
+        secondary.push_back(patch_box(pair, p, u, size));
+        secondary.back().extend(margin_factor * size);
+      }
+    for (const auto &face : pair.primary.faces)
+      {
+        const Point<dim> a = pair.primary.position(face[0], u);
+        const Point<dim> b = pair.primary.position(face[1], u);
+        BoundingBox<dim> box(std::make_pair(a, a));
+        box.merge_with(BoundingBox<dim>(std::make_pair(b, b)));
+        box.extend(margin_factor * a.distance(b));
+        primary.push_back(box);
+      }
+    return find_candidate_pairs(secondary, primary);
+  }
+
+  template <int dim>
+  bool
+  SurfaceContact<dim>::update_candidates(const VectorType &u)
+  {
+    if (gap_field.size() != u.size())
+      {
+        gap_field.reinit(u);
+        gap_field = 0;
+      }
+    bool rebuild = false;
+    for (auto &pair : pairs)
+      {
+        pair.candidates = compute_candidates(pair, u, 0.5);
+        bool covered    = !pair.pattern.empty();
+        for (unsigned int e = 0; covered && e < pair.candidates.size(); ++e)
+          covered = std::includes(pair.pattern[e].begin(),
+                                  pair.pattern[e].end(),
+                                  pair.candidates[e].begin(),
+                                  pair.candidates[e].end());
+        if (!covered)
+          {
+            // a generous margin so that the pattern lasts several steps
+            pair.pattern = compute_candidates(pair, u, 2.0);
+            rebuild      = true;
+          }
+      }
+    return rebuild;
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::add_sparsity(DynamicSparsityPattern &dsp) const
+  {
+    for (const auto &pair : pairs)
+      {
+        // a node's complementarity row couples to all its patches
+        std::vector<std::set<types::global_dof_index>> node_columns(
+          pair.secondary.n_nodes());
+        for (unsigned int p = 0; p < n_patches(pair); ++p)
+          {
+            const auto unknowns = patch_unknowns(pair, p, pair.pattern[p]);
+            for (const auto row : unknowns)
+              for (const auto col : unknowns)
+                dsp.add(row, col);
+            for (const unsigned int n : patch_nodes(pair, p))
+              node_columns[n].insert(unknowns.begin(), unknowns.end());
+          }
+        for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
+          for (const auto col : node_columns[j])
+            dsp.add(pair.secondary.dofs[j][dim], col);
+      }
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::add_force(
+    const types::global_dof_index                                  row,
+    const double                                                   value,
+    const std::vector<std::pair<types::global_dof_index, double>> &derivatives,
+    const AffineConstraints<double>                               &constraints,
+    const bool                                                     with_jacobian,
+    VectorType                                                    &residual,
+    MatrixType                                                    &jacobian,
+    VectorType                                                    &residual_full)
+  {
+    residual_full(row) += value;
+    force(row) += value;
+    if (constraints.is_constrained(row))
+      return;
+    residual(row) += value;
+    if (with_jacobian)
+      for (const auto &d : derivatives)
+        if (!constraints.is_constrained(d.first))
+          jacobian.add(row, d.first, d.second);
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::assemble(const TrialState                &state,
+                                const AffineConstraints<double> &constraints,
+                                const bool                       with_jacobian,
+                                VectorType                      &residual,
+                                MatrixType                      &jacobian,
+                                VectorType                      &residual_full)
+  {
+    if (force.size() != state.u.size())
+      {
+        force.reinit(state.u);
+        force_committed.reinit(state.u);
+      }
+    force          = 0;
+    last_u         = &state.u;
+    bool changed   = false;
+    n_active       = 0;
+    total_force[0] = total_force[1] = 0;
+
+    for (auto &pair : pairs)
+      {
+        const unsigned int n_nodes = pair.secondary.n_nodes();
+        pair.gap.assign(n_nodes, LinearizedValue());
+        pair.weight.assign(n_nodes, LinearizedValue());
+        pair.gap_rate.assign(n_nodes, LinearizedValue());
+        for (unsigned int p = 0; p < n_patches(pair); ++p)
+          assemble_patch(pair, p, state, constraints, with_jacobian, residual,
+                         jacobian, residual_full);
+
+        // the complementarity condition of every secondary node, scaled by
+        // its reference weight so that its row has force units
+        for (unsigned int j = 0; j < n_nodes; ++j)
+          {
+            NodeState                    &node = pair.nodes[j];
+            const types::global_dof_index row  = pair.secondary.dofs[j][dim];
+            const double scale  = pair.secondary.reference_weight[j];
+            const double lambda = state.u(row);
+            node.pressure       = lambda;
+            node.gap            = pair.gap[j].value;
+            node.weight         = pair.weight[j].value;
+            node.projected      = node.weight > 1e-12 * scale;
+
+            // the constraint quantity c * g / w and its derivatives
+            LinearizedValue constraint;
+            bool            active = false;
+            if (node.projected)
+              {
+                const bool rate = node.persistent && state.dynamic;
+                const LinearizedValue &g = rate ? pair.gap_rate[j] : pair.gap[j];
+                const double factor = complementarity.c_n * (rate ? state.dt : 1.);
+                const bool   normalize = complementarity.normalize_c_n;
+                const double w         = normalize ? node.weight : 1.;
+                constraint.value       = factor * g.value / w;
+                for (const auto &d : g.derivatives)
+                  constraint.derivatives[d.first] += factor * d.second / w;
+                if (normalize)
+                  for (const auto &d : pair.weight[j].derivatives)
+                    constraint.derivatives[d.first] -=
+                      factor * g.value * d.second / (w * w);
+                active = (lambda - constraint.value > 0);
+              }
+            if (active != node.active)
+              changed = true;
+            node.active = active;
+            n_active += active;
+            if (constraints.is_constrained(row))
+              continue;
+            if (active)
+              {
+                residual(row) += scale * constraint.value;
+                if (with_jacobian)
+                  for (const auto &d : constraint.derivatives)
+                    if (!constraints.is_constrained(d.first))
+                      jacobian.add(row, d.first, scale * d.second);
+              }
+            else
+              {
+                residual(row) += scale * lambda;
+                if (with_jacobian)
+                  jacobian.add(row, row, scale);
+              }
+          }
+        for (unsigned int j = 0; j < n_nodes; ++j)
+          for (unsigned int d = 0; d < 2; ++d)
+            total_force[d] -= force(pair.secondary.dofs[j][d]);
+      }
+    residual.compress(VectorOperation::add);
+    residual_full.compress(VectorOperation::add);
+    if (with_jacobian)
+      jacobian.compress(VectorOperation::add);
+    active_set_changed = changed;
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::commit_step(const VectorType &old_u, const double time)
+  {
+    Assert(last_u != nullptr, ExcInternalError());
+    // work of the contact forces on the bodies, trapezoidal in time
+    std::set<types::global_dof_index> dofs;
+    for (const auto &pair : pairs)
+      for (const auto *surface : {&pair.secondary, &pair.primary})
+        for (const auto &node_dofs : surface->dofs)
+          for (unsigned int d = 0; d < dim; ++d)
+            dofs.insert(node_dofs[d]);
+    double work = 0;
+    for (const auto i : dofs)
+      work -= ((*last_u)(i) - old_u(i)) * 0.5 *
+              (force(i) + (have_state ? force_committed(i) : 0.));
+    contact_work += work;
+    force_committed = force;
+    committed_u     = *last_u;
+    have_state      = true;
+    gap_field       = 0;
+
+    for (auto &pair : pairs)
+      for (unsigned int j = 0; j < pair.nodes.size(); ++j)
+        {
+          NodeState &node = pair.nodes[j];
+          node.persistent =
+            complementarity.persistency && node.projected &&
+            node.normalized_gap() <= complementarity.capture_tolerance;
+          gap_field(pair.secondary.dofs[j][dim]) = node.normalized_gap();
+        }
+
+    if (history)
+      {
+        *history << std::setprecision(10) << time;
+        for (const auto &m : monitored)
+          {
+            const NodeState &node = pairs[m.first].nodes[m.second];
+            *history << ',' << node.pressure << ',' << node.normalized_gap();
+          }
+        *history << std::endl;
+      }
+  }
+
+  template <int dim>
+  std::vector<std::string>
+  SurfaceContact<dim>::statistics_columns() const
+  {
+    return {"active_contact_nodes",
+            "contact_force_x",
+            "contact_force_y",
+            "contact_work"};
+  }
+
+  template <int dim>
+  std::vector<double>
+  SurfaceContact<dim>::statistics() const
+  {
+    return {double(n_active), total_force[0], total_force[1], contact_work};
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::write_output(const std::string &dir,
+                                    const unsigned int step)
+  {
+    std::ofstream out(dir + "/contact_surface-" +
+                      Utilities::int_to_string(step, 5) + ".csv");
+    out << "pair,node,x,y,gap,pressure,active\n";
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      {
+        const auto               &s = pairs[p].secondary;
+        std::vector<unsigned int> order(s.n_nodes());
+        for (unsigned int j = 0; j < order.size(); ++j)
+          order[j] = j;
+        std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
+          return s.reference[a][0] < s.reference[b][0] ||
+                 (s.reference[a][0] == s.reference[b][0] &&
+                  s.reference[a][1] < s.reference[b][1]);
+        });
+        for (const unsigned int j : order)
+          {
+            const NodeState &node = pairs[p].nodes[j];
+            const Point<dim> x =
+              have_state ? s.position(j, committed_u) : s.reference[j];
+            out << p << ',' << j << ',' << std::setprecision(10) << x[0] << ','
+                << x[1] << ',' << node.normalized_gap() << ',' << node.pressure
+                << ',' << node.active << '\n';
+          }
+      }
+  }
+
+  template class SurfaceContact<2>;
+  template class SurfaceContact<3>;
+} // namespace ContactDynamics
