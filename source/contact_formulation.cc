@@ -3,6 +3,7 @@
 
 #include <contact_dynamics/contact/contact_formulation.h>
 #include <contact_dynamics/contact/mortar_contact.h>
+#include <contact_dynamics/contact/node_to_segment_contact.h>
 
 #include <sstream>
 
@@ -13,11 +14,14 @@ namespace ContactDynamics
   {
     prm.declare_entry("Formulation",
                       "none",
-                      Patterns::Selection("none|mortar"),
+                      Patterns::Selection("none|mortar|nts"),
                       "'none': the bodies do not interact (no multiplier "
                       "unknowns, no cost). 'mortar': dual mortar "
                       "segment-to-segment contact with Lagrange multipliers "
-                      "on the secondary surfaces (2-D).");
+                      "on the secondary surfaces (2-D). 'nts': "
+                      "node-to-segment contact, each secondary node "
+                      "projected onto the primary surface, enforced with "
+                      "nodal multipliers (2-D).");
     prm.declare_entry(
       "Pairs",
       "",
@@ -113,6 +117,9 @@ namespace ContactDynamics
     prm.enter_subsection("Mortar");
     MortarParameters::declare_parameters(prm);
     prm.leave_subsection();
+    prm.enter_subsection("Node to segment");
+    NodeToSegmentParameters::declare_parameters(prm);
+    prm.leave_subsection();
     prm.leave_subsection();
   }
 
@@ -129,11 +136,19 @@ namespace ContactDynamics
     MortarParameters mortar;
     mortar.parse_parameters(prm);
     prm.leave_subsection();
+    prm.enter_subsection("Node to segment");
+    NodeToSegmentParameters nts;
+    nts.parse_parameters(prm);
+    prm.leave_subsection();
     prm.leave_subsection();
 
-    if (contact.formulation == "none")
+    std::unique_ptr<SurfaceContact<dim>> formulation;
+    if (contact.formulation == "mortar")
+      formulation = std::make_unique<MortarContact<dim>>(contact, mortar);
+    else if (contact.formulation == "nts")
+      formulation = std::make_unique<NodeToSegmentContact<dim>>(contact, nts);
+    else
       return nullptr;
-    auto formulation = std::make_unique<MortarContact<dim>>(contact, mortar);
     formulation->set_output_directory(output_directory);
     return formulation;
   }

@@ -540,10 +540,30 @@ namespace ContactDynamics
             << std::setprecision(6) << time << "  dt = " << std::setw(9)
             << dt_current << "  Newton " << std::setw(2) << newton_iterations
             << "  |R| = " << std::scientific << std::setprecision(2)
-            << final_residual << "  E = "
+            << final_residual << "  E_kin+E_el = "
             << energies.kinetic + energies.elastic
             << "  balance error = " << energies.error() << std::defaultfloat
             << std::endl;
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  Simulator<dim>::reaction_force(const std::string &surface) const
+  {
+    const types::boundary_id id = layout.surface_id(surface);
+    Tensor<1, dim>           force;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        std::vector<bool> mask(fe->n_components(), false);
+        mask[d] = true;
+        for (const auto i : DoFTools::extract_boundary_dofs(dof_handler,
+                                                            ComponentMask(mask),
+                                                            {id}))
+          if (increment_constraints.is_constrained(i))
+            // the residual there is what the support must supply, negated
+            force[d] -= residual_full_old(i);
+      }
+    return force;
   }
 
   template <int dim>

@@ -18,8 +18,8 @@ namespace ContactDynamics
                       Patterns::Double(1e-6, 0.5),
                       "Newmark beta in (0, 0.5]. 0.25 with gamma = 0.5 (the "
                       "trapezoidal rule) conserves the energy of a linear "
-                      "undamped system; unconditionally stable if "
-                      "beta >= (gamma + 1/2)^2 / 4.");
+                      "undamped system; 2 beta >= gamma is required "
+                      "(unconditional stability).");
     prm.declare_entry("Newmark gamma",
                       "0.5",
                       Patterns::Double(0.5, 1.),
@@ -33,15 +33,11 @@ namespace ContactDynamics
     dynamic = (prm.get("Scheme") == "newmark");
     beta_   = prm.get_double("Newmark beta");
     gamma_  = prm.get_double("Newmark gamma");
-    AssertThrow(!dynamic || beta_ >= 0.25 * (gamma_ + 0.5) * (gamma_ + 0.5) -
-                                       1e-12,
+    AssertThrow(!dynamic || 2 * beta_ >= gamma_ - 1e-12,
                 ExcMessage("Time integration/Newmark beta = " +
                            std::to_string(beta_) + " with Newmark gamma = " +
                            std::to_string(gamma_) +
                            " is only conditionally stable; this implicit code "
-                           "requires beta >= (gamma + 1/2)^2 / 4 = " +
-                           std::to_string(0.25 * (gamma_ + 0.5) *
-                                          (gamma_ + 0.5)) +
-                           "."));
+                           "requires 2 beta >= gamma >= 1/2."));
   }
 } // namespace ContactDynamics

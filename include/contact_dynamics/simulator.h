@@ -91,6 +91,13 @@ namespace ContactDynamics
       return dof_handler;
     }
 
+    /**
+     * Total reaction force on the Dirichlet degrees of freedom of a named
+     * surface at the current time (force exerted by the support).
+     */
+    Tensor<1, dim>
+    reaction_force(const std::string &surface) const;
+
     /** Dirichlet and unused-multiplier constraints (homogeneous). */
     const AffineConstraints<double> &
     get_constraints() const

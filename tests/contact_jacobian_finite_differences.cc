@@ -1,12 +1,14 @@
-// The mortar contact Jacobian (automatic differentiation through nodal
-// normals, projections and segment end points) against central finite
-// differences of the residual, on the non-matching patch-test interface:
+// The contact Jacobians (automatic differentiation through normals,
+// projections and segment end points) of the mortar and node-to-segment
+// formulations (the latter also with normal smoothing) against central
+// finite differences of the residual, on the non-matching patch-test
+// interface:
 // in contact (tilted penetration, random multipliers), out of contact (open
 // gap, multipliers below c_n times the gap: every node inactive), and
 // with the persistency (gap velocity) condition after an impact. The
 // 'approximate' Jacobian, which drops the geometric derivatives, must
 // differ from the finite differences in contact.
-#include <contact_dynamics/contact/mortar_contact.h>
+#include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
 
 #include "tests.h"
@@ -18,6 +20,8 @@ using ContactDynamics::VectorType;
 
 namespace
 {
+  std::string formulation = "mortar", smoothing = "0";
+
   std::string
   parameters(const std::string &jacobian,
              const std::string &scheme,
@@ -54,10 +58,19 @@ subsection Time integration
   set Time step = 0.01
 end
 subsection Contact
-  set Formulation = mortar
+  set Formulation = )" +
+           formulation + R"(
   set Pairs = upper_bottom: lower_top
   subsection Mortar
     set c_n = 1000
+    set Jacobian = )" +
+           jacobian + R"(
+  end
+  subsection Node to segment
+    set c_n = 1000
+    set Stabilization = persistency
+    set Normal smoothing distance = )" +
+           smoothing + R"(
     set Jacobian = )" +
            jacobian + R"(
   end
@@ -136,8 +149,9 @@ end
     // multipliers): their rows are identities
     simulator.get_constraints().set_zero(direction);
     const double error = fd_error(simulator, trial, direction, 0.01);
-    const auto *mortar = dynamic_cast<const ContactDynamics::MortarContact<2> *>(
-      simulator.get_contact());
+    const auto *mortar =
+      dynamic_cast<const ContactDynamics::SurfaceContact<2> *>(
+        simulator.get_contact());
     unsigned int n_active = 0, n_persistent = 0;
     for (const auto &node : mortar->node_states(0))
       {
@@ -154,20 +168,20 @@ end
   }
 } // namespace
 
-int
-main()
+void
+check_all(const std::string &prefix)
 {
-  initlog();
   const std::string tilted = "0.002*x; -0.003 + 0.002*x";
-  check("in contact, exact", "exact", "quasi-static", tilted, "0; 0", 0, true);
-  check("in contact, approximate",
+  check(prefix + "in contact, exact", "exact", "quasi-static", tilted, "0; 0",
+        0, true);
+  check(prefix + "in contact, approximate",
         "approximate",
         "quasi-static",
         tilted,
         "0; 0",
         0,
         false);
-  check("out of contact, exact",
+  check(prefix + "out of contact, exact",
         "exact",
         "quasi-static",
         "0; 0.01",
@@ -175,11 +189,22 @@ main()
         0,
         true,
         2);
-  check("persistent contact after impact, exact",
+  check(prefix + "persistent contact after impact, exact",
         "exact",
         "newmark",
         "0; 0.0015",
         "0.02; -0.1",
         4,
         true);
+}
+
+int
+main()
+{
+  initlog();
+  check_all("mortar: ");
+  formulation = "nts";
+  check_all("nts: ");
+  smoothing = "0.5";
+  check_all("nts smoothed: ");
 }

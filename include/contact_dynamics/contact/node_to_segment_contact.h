@@ -1,0 +1,71 @@
+// Node-to-segment contact (2-D): every secondary node is projected onto the
+// closest primary face; the pointwise gap along the (optionally smoothed)
+// primary normal is enforced kinematically with a nodal Lagrange multiplier
+// and the same complementarity function as the mortar formulation; see
+// doc/contact.md.
+#ifndef contact_dynamics_contact_node_to_segment_contact_h
+#define contact_dynamics_contact_node_to_segment_contact_h
+
+#include <contact_dynamics/contact/surface_contact.h>
+
+namespace ContactDynamics
+{
+  struct NodeToSegmentParameters
+  {
+    ComplementarityParameters complementarity;
+    double                    smoothing_distance = 0;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  template <int dim>
+  class NodeToSegmentContact : public SurfaceContact<dim>
+  {
+  public:
+    NodeToSegmentContact(const ContactParameters       &contact,
+                         const NodeToSegmentParameters &parameters);
+
+  protected:
+    using PairData = typename SurfaceContact<dim>::PairData;
+
+    /** A patch is a secondary node. */
+    unsigned int
+    n_patches(const PairData &pair) const override
+    {
+      return pair.secondary.n_nodes();
+    }
+
+    BoundingBox<dim>
+    patch_box(const PairData &pair, const unsigned int patch,
+              const VectorType &u, double &size) const override;
+
+    std::vector<unsigned int>
+    patch_nodes(const PairData &, const unsigned int patch) const override
+    {
+      return {patch};
+    }
+
+    std::vector<types::global_dof_index>
+    patch_unknowns(const PairData                  &pair,
+                   const unsigned int               patch,
+                   const std::vector<unsigned int> &primary_faces) const override;
+
+    void
+    assemble_patch(PairData                        &pair,
+                   const unsigned int               patch,
+                   const TrialState                &state,
+                   const AffineConstraints<double> &constraints,
+                   const bool                       with_jacobian,
+                   VectorType                      &residual,
+                   MatrixType                      &jacobian,
+                   VectorType                      &residual_full) override;
+
+  private:
+    double smoothing_distance;
+  };
+} // namespace ContactDynamics
+
+#endif

@@ -1,0 +1,228 @@
+#include <deal.II/base/exceptions.h>
+
+#include <contact_dynamics/contact/contact_ad.h>
+#include <contact_dynamics/contact/node_to_segment_contact.h>
+
+#include <set>
+
+namespace ContactDynamics
+{
+  using ContactAD::AD;
+  using ContactAD::constant;
+  using ContactAD::value;
+  using MortarGeometry::Vec;
+
+  void
+  NodeToSegmentParameters::declare_parameters(ParameterHandler &prm)
+  {
+    ComplementarityParameters::declare_parameters(prm, "none");
+    prm.declare_entry(
+      "Normal smoothing distance",
+      "0",
+      Patterns::Double(0, 0.5),
+      "Fraction of a primary face, at each of its ends, over which the normal "
+      "blends linearly into the average with the neighbouring face's normal "
+      "(continuous at the node), in [0, 0.5]: 0 = no smoothing, 0.5 = "
+      "maximal smoothing (the paper's 'NTS with normal smoothing').");
+  }
+
+  void
+  NodeToSegmentParameters::parse_parameters(ParameterHandler &prm)
+  {
+    complementarity.parse_parameters(prm);
+    smoothing_distance = prm.get_double("Normal smoothing distance");
+  }
+
+
+
+  template <int dim>
+  NodeToSegmentContact<dim>::NodeToSegmentContact(
+    const ContactParameters       &contact,
+    const NodeToSegmentParameters &parameters)
+    : SurfaceContact<dim>(contact, parameters.complementarity)
+    , smoothing_distance(parameters.smoothing_distance)
+  {}
+
+  namespace
+  {
+    // nodes of the primary faces and of their neighbours (which define the
+    // smoothed normals near the face ends)
+    template <int dim, typename PairData>
+    std::set<unsigned int>
+    primary_nodes(const PairData &pair, const std::vector<unsigned int> &faces)
+    {
+      std::set<unsigned int> nodes;
+      for (const unsigned int f : faces)
+        for (const unsigned int node : pair.primary.faces[f])
+          {
+            nodes.insert(node);
+            const unsigned int other = pair.primary.neighbour(node, f);
+            if (other != ContactSurface<dim>::invalid)
+              nodes.insert(other);
+          }
+      return nodes;
+    }
+  } // namespace
+
+  template <int dim>
+  BoundingBox<dim>
+  NodeToSegmentContact<dim>::patch_box(const PairData   &pair,
+                                       const unsigned int node,
+                                       const VectorType &u,
+                                       double           &size) const
+  {
+    const Point<dim> x = pair.secondary.position(node, u);
+    size               = pair.secondary.reference_weight[node] * 2;
+    return BoundingBox<dim>(std::make_pair(x, x));
+  }
+
+  template <int dim>
+  std::vector<types::global_dof_index>
+  NodeToSegmentContact<dim>::patch_unknowns(
+    const PairData                  &pair,
+    const unsigned int               node,
+    const std::vector<unsigned int> &primary_faces) const
+  {
+    std::vector<types::global_dof_index> unknowns;
+    for (unsigned int d = 0; d < dim; ++d)
+      unknowns.push_back(pair.secondary.dofs[node][d]);
+    for (const unsigned int n : primary_nodes<dim>(pair, primary_faces))
+      for (unsigned int d = 0; d < dim; ++d)
+        unknowns.push_back(pair.primary.dofs[n][d]);
+    unknowns.push_back(pair.secondary.dofs[node][dim]);
+    return unknowns;
+  }
+
+  template <int dim>
+  void
+  NodeToSegmentContact<dim>::assemble_patch(
+    PairData                        &pair,
+    const unsigned int               j,
+    const TrialState                &state,
+    const AffineConstraints<double> &constraints,
+    const bool                       with_jacobian,
+    VectorType                      &residual,
+    MatrixType                      &jacobian,
+    VectorType                      &residual_full)
+  {
+    const auto &s        = pair.secondary;
+    const auto &p        = pair.primary;
+    const auto &faces    = pair.candidates[j];
+    const auto  unknowns = patch_unknowns(pair, j, faces);
+    const bool  exact    = this->complementarity.exact_jacobian;
+
+    ContactAD::NodeVariables<dim>   variables(unknowns, state);
+    Vec<AD>                         x, v;
+    std::map<unsigned int, Vec<AD>> xp, vp;
+    variables.add(s, j, x, v);
+    for (const unsigned int node : primary_nodes<dim>(pair, faces))
+      variables.add(p, node, xp[node], vp[node]);
+    const AD lambda = variables.multiplier();
+
+    // the secondary node's own normal, to skip faces seen from behind
+    Vec<double> n_s;
+    for (const unsigned int f : s.node_faces[j])
+      {
+        Vec<double> a, b;
+        for (unsigned int k = 0; k < 2; ++k)
+          {
+            a[k] = s.position(s.faces[f][0], state.u)[k];
+            b[k] = s.position(s.faces[f][1], state.u)[k];
+          }
+        n_s += MortarGeometry::face_normal(a, b);
+      }
+
+    // closest point projection: the face with the smallest distance among
+    // those the node projects into
+    unsigned int best = ContactSurface<dim>::invalid;
+    double       best_distance = 1e300, best_eta = 0;
+    for (const unsigned int f : faces)
+      {
+        const Vec<double> y0 = value(xp.at(p.faces[f][0]));
+        const Vec<double> y1 = value(xp.at(p.faces[f][1]));
+        const Vec<double> t  = (y1 - y0) / 2.;
+        const Vec<double> m  = (y0 + y1) / 2.;
+        if (MortarGeometry::face_normal(y0, y1) * n_s >= 0)
+          continue;
+        const double eta =
+          std::max(-1., std::min(1., (value(x) - m) * t / (t * t)));
+        const double distance = (value(x) - (m + eta * t)).norm();
+        if (distance < best_distance)
+          {
+            best          = f;
+            best_distance = distance;
+            best_eta      = eta;
+          }
+      }
+    if (best == ContactSurface<dim>::invalid)
+      return; // no projection: the node is inactive
+
+    const unsigned int c = p.faces[best][0], d = p.faces[best][1];
+    const Vec<AD>     &y0 = xp.at(c), &y1 = xp.at(d);
+    const Vec<AD>      t  = (y1 - y0) / 2.;
+    const Vec<AD>      m  = (y0 + y1) / 2.;
+    AD eta = (x - m) * t / (t * t);
+    if (std::abs(best_eta) == 1. || !exact)
+      eta = AD(best_eta); // clamped at a face end, or approximate
+    Vec<AD> normal = MortarGeometry::face_normal(y0, y1);
+
+    // within the smoothing distance of a face end the normal blends
+    // linearly into the mean of the two faces' normals at that node
+    if (smoothing_distance > 0)
+      {
+        const Vec<AD> face_normal = normal;
+        for (const unsigned int end : {0u, 1u})
+          {
+            const AD to_end = end == 0 ? AD((1. + eta) / 2.) : AD((1. - eta) / 2.);
+            const unsigned int node  = p.faces[best][end];
+            const unsigned int other = p.neighbour(node, best);
+            if (to_end.val() >= smoothing_distance ||
+                other == ContactSurface<dim>::invalid)
+              continue;
+            // the neighbour face, oriented like the surface
+            const Vec<AD> n_other =
+              end == 0 ? MortarGeometry::face_normal(xp.at(other), y0) :
+                         MortarGeometry::face_normal(y1, xp.at(other));
+            const AD weight = (smoothing_distance - to_end) / smoothing_distance;
+            normal += AD(weight / 2.) * (n_other - face_normal);
+          }
+        normal /= MortarGeometry::norm(normal);
+      }
+    if (!exact)
+      normal = constant(normal);
+
+    const auto    N   = MortarGeometry::shape(eta);
+    const Vec<AD> x_p = N[0] * y0 + N[1] * y1;
+    const AD      g   = (x - x_p) * normal;
+    ContactAD::add_to(pair.gap[j], g, unknowns);
+    pair.weight[j].value += 1.;
+    if (this->complementarity.persistency && state.dynamic)
+      {
+        const Vec<AD> v_p = N[0] * vp.at(c) + N[1] * vp.at(d);
+        ContactAD::add_to(pair.gap_rate[j], AD((v - v_p) * normal), unknowns);
+      }
+
+    // the nodal force lambda w n pushes the secondary node out along the
+    // primary normal; the primary face gets the opposite force
+    const Vec<AD> f = AD(lambda * s.reference_weight[j]) * normal;
+    for (unsigned int k = 0; k < 2; ++k)
+      {
+        const AD rows[3] = {-f[k], N[0] * f[k], N[1] * f[k]};
+        const types::global_dof_index dofs[3] = {s.dofs[j][k],
+                                                 p.dofs[c][k],
+                                                 p.dofs[d][k]};
+        for (unsigned int r = 0; r < 3; ++r)
+          this->add_force(dofs[r],
+                          rows[r].val(),
+                          ContactAD::derivatives(rows[r], unknowns),
+                          constraints,
+                          with_jacobian,
+                          residual,
+                          jacobian,
+                          residual_full);
+      }
+  }
+
+  template class NodeToSegmentContact<2>;
+  template class NodeToSegmentContact<3>;
+} // namespace ContactDynamics
