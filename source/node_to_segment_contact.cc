@@ -132,9 +132,15 @@ namespace ContactDynamics
         n_s += MortarGeometry::face_normal(a, b);
       }
 
-    // closest point projection: the face with the smallest distance among
-    // those the node projects into
-    unsigned int best = ContactSurface<dim>::invalid;
+    // closest point projection. A node keeps the face it projected onto in
+    // the previous evaluation while it stays within a small tolerance of
+    // that face: at a concave kink of the primary surface two faces are
+    // equally close, and switching between them at every Newton iteration
+    // (their normals differ) would stall the iteration.
+    constexpr double tangential_tolerance = 1e-2;
+    auto            &previous = last_face[&pair - this->pairs.data()];
+    previous.resize(s.n_nodes(), ContactSurface<dim>::invalid);
+    unsigned int best          = ContactSurface<dim>::invalid;
     double       best_distance = 1e300, best_eta = 0;
     for (const unsigned int f : faces)
       {
@@ -144,8 +150,15 @@ namespace ContactDynamics
         const Vec<double> m  = (y0 + y1) / 2.;
         if (MortarGeometry::face_normal(y0, y1) * n_s >= 0)
           continue;
-        const double eta =
-          std::max(-1., std::min(1., (value(x) - m) * t / (t * t)));
+        const double eta_free = (value(x) - m) * t / (t * t);
+        if (f == previous[j] &&
+            std::abs(eta_free) <= 1 + tangential_tolerance)
+          {
+            best     = f;
+            best_eta = eta_free;
+            break;
+          }
+        const double eta      = std::max(-1., std::min(1., eta_free));
         const double distance = (value(x) - (m + eta * t)).norm();
         if (distance < best_distance)
           {
@@ -154,6 +167,7 @@ namespace ContactDynamics
             best_eta      = eta;
           }
       }
+    previous[j] = best;
     if (best == ContactSurface<dim>::invalid)
       return; // no projection: the node is inactive
 
@@ -162,7 +176,7 @@ namespace ContactDynamics
     const Vec<AD>      t  = (y1 - y0) / 2.;
     const Vec<AD>      m  = (y0 + y1) / 2.;
     AD eta = (x - m) * t / (t * t);
-    if (std::abs(best_eta) == 1. || !exact)
+    if (std::abs(eta.val() - best_eta) > 1e-12 || !exact)
       eta = AD(best_eta); // clamped at a face end, or approximate
     Vec<AD> normal = MortarGeometry::face_normal(y0, y1);
 

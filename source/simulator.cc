@@ -560,8 +560,8 @@ namespace ContactDynamics
                                                             ComponentMask(mask),
                                                             {id}))
           if (increment_constraints.is_constrained(i))
-            // the residual there is what the support must supply, negated
-            force[d] -= residual_full_old(i);
+            // the support balances the unconstrained residual there
+            force[d] += residual_full_old(i);
       }
     return force;
   }

@@ -6,8 +6,10 @@
 // The half-width is measured from the second moment of the nodal pressures
 // (a^2 = 4 int p x^2 / int p for the Hertz profile), with the nodal weights
 // integral(N_j) of the current configuration. Checked at two mesh
-// refinements: within a few percent, and the errors decrease.
-#include <contact_dynamics/contact/mortar_contact.h>
+// refinements: within a few percent, and the errors decrease; and the
+// node-to-segment formulation (nodal pressure = nodal force / tributary
+// length) on the finer mesh.
+#include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
 
 #include "tests.h"
@@ -24,7 +26,7 @@ namespace
   };
 
   Errors
-  run(const double factor)
+  run(const double factor, const std::string &formulation = "mortar")
   {
     ParameterHandler prm;
     read_test_parameters("hertz.prm",
@@ -54,9 +56,12 @@ subsection Nonlinear solver
   set Absolute tolerance = 1e-9
 end
 subsection Contact
-  set Formulation = mortar
+  set Formulation = )" + formulation + R"(
   set Pairs = cylinder_arc: block_top
   subsection Mortar
+    set c_n = 1e4
+  end
+  subsection Node to segment
     set c_n = 1e4
   end
 end
@@ -70,7 +75,7 @@ end
     ContactDynamics::Simulator<2> simulator(prm, screen);
     simulator.run();
     const auto *mortar =
-      dynamic_cast<const ContactDynamics::MortarContact<2> *>(
+      dynamic_cast<const ContactDynamics::SurfaceContact<2> *>(
         simulator.get_contact());
     const auto  &surface = mortar->secondary_surface(0);
     const auto  &nodes   = mortar->node_states(0);
@@ -81,11 +86,17 @@ end
     const double a      = std::sqrt(4 * P * R / (M_PI * E_star));
     const double p0     = 2 * P / (M_PI * a);
 
+    // tributary length of a node: integral of N_j over the covered part of
+    // the surface (mortar), or in the reference configuration (nts)
+    const auto weight = [&](const unsigned int j) {
+      return formulation == "nts" ? surface.reference_weight[j] :
+                                    nodes[j].weight;
+    };
     double m0 = 0, m1 = 0, m2 = 0, peak = 0;
     for (unsigned int j = 0; j < nodes.size(); ++j)
       {
         const double x = surface.position(j, simulator.displacement())[0];
-        const double w = nodes[j].weight;
+        const double w = weight(j);
         m0 += nodes[j].pressure * w;
         m1 += nodes[j].pressure * w * x;
         m2 += nodes[j].pressure * w * x * x;
@@ -99,17 +110,18 @@ end
         const double r = (surface.position(j, simulator.displacement())[0] -
                           centre) / a;
         const double exact = p0 * std::sqrt(std::max(0., 1 - r * r));
-        const double w     = nodes[j].weight;
+        const double w     = weight(j);
         num += w * std::pow(nodes[j].pressure - exact, 2);
         den += w * exact * exact;
       }
-    deallog << std::setprecision(3) << "factor " << factor << ": P = " << P << ", a = " << a
+    deallog << std::setprecision(3) << formulation << ", factor " << factor << ": P = " << P << ", a = " << a
             << ", p0 = " << p0 << std::endl;
-    check_close("factor " + std::to_string(factor) +
+    check_close(formulation + ", factor " + std::to_string(factor) +
                   ": sum of nodal forces / P",
                 m0 / P,
                 1.,
                 5e-3);
+    // node-to-segment: nodal force / reference tributary length
     return {a_h / a - 1, peak / p0 - 1, std::sqrt(num / den)};
   }
 } // namespace
@@ -134,6 +146,13 @@ main()
              std::abs(fine.half_width) < std::abs(coarse.half_width));
   check_true("profile error decreases with refinement",
              fine.profile < coarse.profile);
+  const Errors nts = run(1, "nts");
+  check_close("nts: half-width error within 5 %", nts.half_width, 0., 0.05);
+  check_close("nts: peak pressure error within 3 %", nts.peak, 0., 0.03);
+  check_close("nts: profile L2 error within 6 %", nts.profile, 0., 0.06);
+  deallog << std::setprecision(2) << "nts errors (half-width, peak, profile): "
+          << 100 * nts.half_width << "% " << 100 * nts.peak << "% "
+          << 100 * nts.profile << "%" << std::endl;
   deallog << std::setprecision(2) << "errors (half-width, peak, profile): "
           << "coarse " << 100 * coarse.half_width << "% " << 100 * coarse.peak
           << "% " << 100 * coarse.profile << "%, fine " << 100 * fine.half_width

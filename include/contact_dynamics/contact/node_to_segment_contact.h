@@ -8,6 +8,8 @@
 
 #include <contact_dynamics/contact/surface_contact.h>
 
+#include <map>
+
 namespace ContactDynamics
 {
   struct NodeToSegmentParameters
@@ -65,6 +67,8 @@ namespace ContactDynamics
 
   private:
     double smoothing_distance;
+    // per pair and secondary node: the primary face of the last projection
+    std::map<std::ptrdiff_t, std::vector<unsigned int>> last_face;
   };
 } // namespace ContactDynamics
 
