@@ -164,7 +164,11 @@ namespace ContactDynamics
           {
             best          = f;
             best_distance = distance;
-            best_eta      = eta;
+            // within the tolerance the projection extends the face, as it
+            // does for a kept face
+            best_eta = std::abs(eta_free) <= 1 + tangential_tolerance ?
+                         eta_free :
+                         eta;
           }
       }
     previous[j] = best;

@@ -2,8 +2,11 @@
 
 #include <contact_dynamics/nonlinear_solver.h>
 
+#include <deal.II/base/utilities.h>
+
 #include <cmath>
 #include <iomanip>
+#include <sstream>
 
 namespace ContactDynamics
 {
@@ -67,9 +70,17 @@ namespace ContactDynamics
           {
             system.assemble(need_jacobian, residual, jacobian);
           }
+        catch (const ExceptionBase &e)
+          {
+            std::ostringstream message;
+            e.print_info(message);
+            result.failure       = Utilities::trim(message.str());
+            factorization_valid = false;
+            return result;
+          }
         catch (const std::exception &e)
           {
-            result.failure = e.what();
+            result.failure      = e.what();
             factorization_valid = false;
             return result;
           }

@@ -20,6 +20,16 @@ namespace ContactDynamics
                       "trapezoidal rule) conserves the energy of a linear "
                       "undamped system; 2 beta >= gamma is required "
                       "(unconditional stability).");
+    prm.declare_entry(
+      "Predictor",
+      "constant velocity",
+      Patterns::Selection(
+        "constant displacement|constant velocity|constant acceleration"),
+      "Start of the Newton iteration of a step (Dirichlet values are always "
+      "those of the new time): u_n, u_n + dt v_n, or u_n + dt v_n + dt^2/2 "
+      "a_n. The last one saves Newton iterations in smooth motion but "
+      "overshoots (and can invert elements) after an impulsive start or an "
+      "impact, where the acceleration is large.");
     prm.declare_entry("Newmark gamma",
                       "0.5",
                       Patterns::Double(0.5, 1.),
@@ -33,6 +43,10 @@ namespace ContactDynamics
     dynamic = (prm.get("Scheme") == "newmark");
     beta_   = prm.get_double("Newmark beta");
     gamma_  = prm.get_double("Newmark gamma");
+    const std::string p = prm.get("Predictor");
+    predictor = (p == "constant displacement" ? Predictor::displacement :
+                 p == "constant velocity"     ? Predictor::velocity :
+                                                Predictor::acceleration);
     AssertThrow(!dynamic || 2 * beta_ >= gamma_ - 1e-12,
                 ExcMessage("Time integration/Newmark beta = " +
                            std::to_string(beta_) + " with Newmark gamma = " +

@@ -82,7 +82,7 @@ namespace ContactDynamics
       v_new = v_old + dt * ((1. - gamma_) * a_old + gamma_ * a_new);
     }
 
-    /** Predicted displacement at t_{n+1} (Taylor series, zero jerk). */
+    /** Predicted displacement at t_{n+1} (see the Predictor entry). */
     template <typename Number>
     Number
     predict(const double  dt,
@@ -90,12 +90,21 @@ namespace ContactDynamics
             const Number &v_old,
             const Number &a_old) const
     {
-      if (!dynamic)
+      if (!dynamic || predictor == Predictor::displacement)
         return u_old;
+      if (predictor == Predictor::velocity)
+        return u_old + dt * v_old;
       return u_old + dt * v_old + 0.5 * dt * dt * a_old;
     }
 
   private:
+    enum class Predictor
+    {
+      displacement,
+      velocity,
+      acceleration
+    };
+    Predictor predictor = Predictor::velocity;
     bool   dynamic = true;
     double beta_   = 0.25;
     double gamma_  = 0.5;
