@@ -30,6 +30,12 @@ namespace ContactDynamics
       "several surfaces with '+', e.g. 'tool_arc + tool_sides: "
       "substrate_top'. The secondary side carries the multipliers: choose the "
       "finer surface.");
+    prm.declare_entry("Friction coefficients",
+                      "0",
+                      Patterns::Anything(),
+                      "Coulomb friction coefficient mu >= 0 of each pair, "
+                      "separated by ';' in the order of 'Pairs', or one value "
+                      "for all. 0 = frictionless (no tangential unknowns).");
     prm.declare_entry("Monitored points",
                       "",
                       Patterns::Anything(),
@@ -82,6 +88,28 @@ namespace ContactDynamics
                       ExcMessage("In 'Contact/Pairs', the entry '" + entry +
                                  "' has a surface on both sides."));
         pairs.push_back(pair);
+      }
+    const auto mu = Utilities::split_string_list(prm.get("Friction coefficients"), ';');
+    AssertThrow(mu.size() == 1 || mu.size() == pairs.size(),
+                ExcMessage("'Contact/Friction coefficients' = '" +
+                           prm.get("Friction coefficients") + "' has " +
+                           std::to_string(mu.size()) +
+                           " values; give one, or one per pair (" +
+                           std::to_string(pairs.size()) + ")."));
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      {
+        const std::string &text = mu[mu.size() == 1 ? 0 : p];
+        double             value = -1;
+        try
+          {
+            value = Utilities::string_to_double(text);
+          }
+        catch (...)
+          {}
+        AssertThrow(value >= 0 && value <= 10,
+                    ExcMessage("'Contact/Friction coefficients': '" + text +
+                               "' is not a number in [0, 10]."));
+        pairs[p].friction_coefficient = value;
       }
     AssertThrow(formulation == "none" || !pairs.empty(),
                 ExcMessage("Contact/Formulation = " + formulation +

@@ -91,8 +91,10 @@ namespace ContactDynamics
     for (const unsigned int n : primary_nodes<dim>(pair, primary_faces))
       for (unsigned int d = 0; d < dim; ++d)
         unknowns.push_back(pair.primary.dofs[n][d]);
-    unknowns.push_back(s.dofs[f[0]][dim]);
-    unknowns.push_back(s.dofs[f[1]][dim]);
+    // normal and tangential multipliers
+    for (const unsigned int c : {dim, dim + 1})
+      for (const unsigned int n : f)
+        unknowns.push_back(s.dofs[n][c]);
     return unknowns;
   }
 
@@ -124,8 +126,10 @@ namespace ContactDynamics
         variables.add(s, node, xs[node], vs[node]);
     for (const unsigned int node : primary_nodes<dim>(pair, pair.candidates[e]))
       variables.add(p, node, xp[node], vp[node]);
-    const AD lambda_0 = variables.multiplier();
-    const AD lambda_1 = variables.multiplier();
+    const AD lambda_0   = variables.multiplier();
+    const AD lambda_1   = variables.multiplier();
+    const AD lambda_t_0 = variables.multiplier();
+    const AD lambda_t_1 = variables.multiplier();
 
     // nodal normals: average of the adjacent unit face normals
     const auto face_normal = [&](const unsigned int f) {
@@ -144,10 +148,13 @@ namespace ContactDynamics
     const Vec<AD>  face_n = MortarGeometry::face_normal(x0, x1);
     const AD       half_length = MortarGeometry::norm(Vec<AD>(x1 - x0)) / 2.;
 
-    std::map<types::global_dof_index, AD> rows; // residual contributions
-    AD gap[2], weight[2], gap_rate[2];
+    const Vec<AD> t0 = MortarGeometry::rotate(n0), t1 = MortarGeometry::rotate(n1);
+    std::map<types::global_dof_index, AD>     rows; // residual contributions
+    std::map<types::global_dof_index, double> tangential_rows;
+    AD gap[2], weight[2], gap_rate[2], slip_rate[2];
     for (unsigned int i = 0; i < 2; ++i)
-      gap[i] = weight[i] = gap_rate[i] = AD(0.);
+      gap[i] = weight[i] = gap_rate[i] = slip_rate[i] = AD(0.);
+    const bool friction = pair.friction_coefficient > 0;
     const QGauss<1> gauss(quadrature_points);
 
     for (const unsigned int pf : pair.candidates[e])
@@ -200,22 +207,43 @@ namespace ContactDynamics
                 gap[i] += psi[i] * g * JxW;
                 weight[i] += N[i] * JxW;
               }
-            if (this->complementarity.persistency && state.dynamic)
+            const bool rates =
+              this->complementarity.persistency && state.dynamic;
+            if (rates || friction)
               {
-                const Vec<AD> v_s = N[0] * vs.at(face[0]) + N[1] * vs.at(face[1]);
-                const Vec<AD> v_p =
-                  Np[0] * vp.at(p.faces[pf][0]) + Np[1] * vp.at(p.faces[pf][1]);
-                const AD g_dot = (v_p - v_s) * normal;
+                const Vec<AD> v_s =
+                  N[0] * vs.at(face[0]) + N[1] * vs.at(face[1]);
+                const Vec<AD> v_p = Np[0] * vp.at(p.faces[pf][0]) +
+                                    Np[1] * vp.at(p.faces[pf][1]);
+                const Vec<AD> v_rel = v_s - v_p;
                 for (unsigned int i = 0; i < 2; ++i)
-                  gap_rate[i] += psi[i] * g_dot * JxW;
+                  {
+                    if (rates)
+                      gap_rate[i] -= psi[i] * (v_rel * normal) * JxW;
+                    if (friction)
+                      slip_rate[i] += psi[i] *
+                                      (v_rel * MortarGeometry::rotate(normal)) *
+                                      JxW;
+                  }
               }
-            // contact traction z = sum_j psi_j lambda_j n_j on both sides
-            const Vec<AD> z = AD(psi[0] * lambda_0) * n0 + AD(psi[1] * lambda_1) * n1;
+            // contact traction z = sum_j psi_j (lambda_j n_j + lambda_t,j
+            // t_j), acting on both sides
+            const Vec<AD> z_t =
+              AD(psi[0] * lambda_t_0) * t0 + AD(psi[1] * lambda_t_1) * t1;
+            const Vec<AD> z =
+              AD(psi[0] * lambda_0) * n0 + AD(psi[1] * lambda_1) * n1 + z_t;
             for (unsigned int i = 0; i < 2; ++i)
               for (unsigned int d = 0; d < 2; ++d)
                 {
                   rows[s.dofs[face[i]][d]] += N[i] * z[d] * JxW;
                   rows[p.dofs[p.faces[pf][i]][d]] -= Np[i] * z[d] * JxW;
+                  if (friction)
+                    {
+                      const double ft = (z_t[d] * JxW).val();
+                      tangential_rows[s.dofs[face[i]][d]] += N[i].val() * ft;
+                      tangential_rows[p.dofs[p.faces[pf][i]][d]] -=
+                        Np[i].val() * ft;
+                    }
                 }
           }
       }
@@ -229,11 +257,14 @@ namespace ContactDynamics
                       residual,
                       jacobian,
                       residual_full);
+    for (const auto &r : tangential_rows)
+      this->add_tangential_force(r.first, r.second);
     for (unsigned int i = 0; i < 2; ++i)
       {
         ContactAD::add_to(pair.gap[face[i]], gap[i], unknowns);
         ContactAD::add_to(pair.weight[face[i]], weight[i], unknowns);
         ContactAD::add_to(pair.gap_rate[face[i]], gap_rate[i], unknowns);
+        ContactAD::add_to(pair.slip_rate[face[i]], slip_rate[i], unknowns);
       }
   }
 

@@ -90,6 +90,7 @@ namespace ContactDynamics
       for (unsigned int d = 0; d < dim; ++d)
         unknowns.push_back(pair.primary.dofs[n][d]);
     unknowns.push_back(pair.secondary.dofs[node][dim]);
+    unknowns.push_back(pair.secondary.dofs[node][dim + 1]);
     return unknowns;
   }
 
@@ -117,7 +118,8 @@ namespace ContactDynamics
     variables.add(s, j, x, v);
     for (const unsigned int node : primary_nodes<dim>(pair, faces))
       variables.add(p, node, xp[node], vp[node]);
-    const AD lambda = variables.multiplier();
+    const AD lambda   = variables.multiplier();
+    const AD lambda_t = variables.multiplier();
 
     // the secondary node's own normal, to skip faces seen from behind
     Vec<double> n_s;
@@ -214,18 +216,28 @@ namespace ContactDynamics
     const AD      g   = (x - x_p) * normal;
     ContactAD::add_to(pair.gap[j], g, unknowns);
     pair.weight[j].value += 1.;
-    if (this->complementarity.persistency && state.dynamic)
+    // the secondary side's normal and tangent at the node, from the primary
+    const Vec<AD> n_secondary = -normal;
+    const Vec<AD> tangent     = MortarGeometry::rotate(n_secondary);
+    const bool    friction    = pair.friction_coefficient > 0;
+    if ((this->complementarity.persistency && state.dynamic) || friction)
       {
-        const Vec<AD> v_p = N[0] * vp.at(c) + N[1] * vp.at(d);
-        ContactAD::add_to(pair.gap_rate[j], AD((v - v_p) * normal), unknowns);
+        const Vec<AD> v_rel = v - (N[0] * vp.at(c) + N[1] * vp.at(d));
+        ContactAD::add_to(pair.gap_rate[j], AD(-(v_rel * n_secondary)),
+                          unknowns);
+        if (friction)
+          ContactAD::add_to(pair.slip_rate[j], AD(v_rel * tangent), unknowns);
       }
 
-    // the nodal force lambda w n pushes the secondary node out along the
-    // primary normal; the primary face gets the opposite force
-    const Vec<AD> f = AD(lambda * s.reference_weight[j]) * normal;
+    // the nodal force L (lambda n + lambda_t t), with the secondary side's
+    // normal n = -(primary normal) and tangent t, acts on the secondary node
+    // and, with weights N(eta), opposite on the primary face
+    const double  L   = s.reference_weight[j];
+    const Vec<AD> f_t = AD(lambda_t * L) * tangent;
+    const Vec<AD> f   = AD(lambda * L) * n_secondary + f_t;
     for (unsigned int k = 0; k < 2; ++k)
       {
-        const AD rows[3] = {-f[k], N[0] * f[k], N[1] * f[k]};
+        const AD rows[3] = {f[k], -N[0] * f[k], -N[1] * f[k]};
         const types::global_dof_index dofs[3] = {s.dofs[j][k],
                                                  p.dofs[c][k],
                                                  p.dofs[d][k]};
@@ -238,6 +250,12 @@ namespace ContactDynamics
                           residual,
                           jacobian,
                           residual_full);
+        if (friction)
+          {
+            this->add_tangential_force(s.dofs[j][k], f_t[k].val());
+            this->add_tangential_force(p.dofs[c][k], -N[0].val() * f_t[k].val());
+            this->add_tangential_force(p.dofs[d][k], -N[1].val() * f_t[k].val());
+          }
       }
   }
 

@@ -863,7 +863,22 @@ namespace ContactDynamics
           GridIn<dim> grid_in;
           grid_in.attach_triangulation(file_mesh);
           std::ifstream in(mesh_file);
-          grid_in.read_msh(in);
+          try
+            {
+              grid_in.read_msh(in);
+            }
+          catch (const ExceptionBase &e)
+            {
+              std::ostringstream reason;
+              e.print_info(reason);
+              AssertThrow(false,
+                          ExcMessage(mesh_file_error_prefix(mesh_file) +
+                                     "could not be read by GridIn::read_msh():\n" +
+                                     reason.str() +
+                                     "(A common cause: a tagged line between two bodies "
+                                     "that share nodes. Mesh touching bodies with their "
+                                     "own nodes and faces.)"));
+            }
         }
 
         std::map<int, types::material_id> body_of_tag;

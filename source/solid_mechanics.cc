@@ -158,7 +158,8 @@ namespace ContactDynamics
 
               if (dynamic && beta > 0)
                 tangent += (c_v * beta) * material.reference_elasticity();
-              const double mass_factor = rho * (c_a + alpha * c_v);
+              const double mass_factor =
+                dynamic ? rho * (c_a + alpha * c_v) : 0.;
               for (const unsigned int j : f.u_local)
                 tangent_grad_phi[j] =
                   double_contract<2, 0, 3, 1>(tangent, grad_phi[j]);

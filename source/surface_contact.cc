@@ -47,6 +47,15 @@ namespace ContactDynamics
                       "most this value at the end of a step counts as in "
                       "contact for the persistency condition of the next "
                       "step (>= 0).");
+    prm.declare_entry("c_t",
+                      "1e4",
+                      Patterns::Double(1e-300),
+                      "Friction complementarity constant c_t > 0 (paper "
+                      "equation 8): decides stick or slip from lambda_t + c_t "
+                      "v_t with the (normalized) relative tangential velocity "
+                      "v_t; like c_n it changes the Newton path, not the "
+                      "solution. Units stress x time / length; c_n dt is a "
+                      "good start.");
     prm.declare_entry("Jacobian",
                       "exact",
                       Patterns::Selection("exact|approximate"),
@@ -64,6 +73,7 @@ namespace ContactDynamics
     persistency       = prm.get("Stabilization") == "persistency";
     capture_tolerance = prm.get_double("Capture tolerance");
     exact_jacobian    = prm.get("Jacobian") == "exact";
+    c_t               = prm.get_double("c_t");
   }
 
 
@@ -96,6 +106,8 @@ namespace ContactDynamics
     pairs.clear();
     pairs.resize(contact.pairs.size());
     std::set<types::global_dof_index> secondary_normal;
+    friction               = false;
+    frictional_dissipation = 0;
     for (unsigned int p = 0; p < contact.pairs.size(); ++p)
       {
         auto &pair = pairs[p];
@@ -105,8 +117,15 @@ namespace ContactDynamics
                     ExcMessage("The contact pair '" + contact.pairs[p].name +
                                "' has an empty surface."));
         pair.nodes.assign(pair.secondary.n_nodes(), NodeState());
+        pair.friction_coefficient = contact.pairs[p].friction_coefficient;
         for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
-          secondary_normal.insert(pair.secondary.dofs[j][dim]);
+          {
+            secondary_normal.insert(pair.secondary.dofs[j][dim]);
+            // the tangential multiplier is an unknown only with friction
+            if (pair.friction_coefficient > 0)
+              secondary_normal.insert(pair.secondary.dofs[j][dim + 1]);
+          }
+        friction = friction || pair.friction_coefficient > 0;
       }
     normal_multiplier_dofs.assign(secondary_normal.begin(),
                                   secondary_normal.end());
@@ -272,6 +291,81 @@ namespace ContactDynamics
 
   template <int dim>
   void
+  SurfaceContact<dim>::assemble_friction(
+    PairData                        &pair,
+    const unsigned int               j,
+    const bool                       active,
+    const double                     lambda_n,
+    const LinearizedValue           &constraint,
+    const AffineConstraints<double> &constraints,
+    const bool                       with_jacobian,
+    VectorType                      &residual,
+    MatrixType                      &jacobian)
+  {
+    // Coulomb friction (paper equation 8) in its semi-smooth form: with
+    // xi = lambda_n - c_n g (the normal argument) and s = lambda_t + c_t v,
+    //   inactive:           lambda_t = 0
+    //   stick (|s| < mu xi): v = 0 (written c_t v = 0)
+    //   slip:               lambda_t - mu xi sign(s) = 0
+    NodeState                    &node  = pair.nodes[j];
+    const types::global_dof_index row   = pair.secondary.dofs[j][dim + 1];
+    const double                  scale = pair.secondary.reference_weight[j];
+    const double                  mu    = pair.friction_coefficient;
+    const double                  lambda_t = (*last_u)(row);
+
+    // normalized slip rate
+    LinearizedValue v;
+    const double w = (complementarity.normalize_c_n && node.projected) ?
+                       node.weight : 1.;
+    v.value = pair.slip_rate[j].value / w;
+    for (const auto &d : pair.slip_rate[j].derivatives)
+      v.derivatives[d.first] += d.second / w;
+    if (complementarity.normalize_c_n && node.projected)
+      for (const auto &d : pair.weight[j].derivatives)
+        v.derivatives[d.first] -= pair.slip_rate[j].value * d.second / (w * w);
+    node.tangential = lambda_t;
+    node.slip_rate  = v.value;
+    node.stick      = false;
+    if (constraints.is_constrained(row))
+      return;
+
+    const double xi = lambda_n - constraint.value;
+    const double s  = lambda_t + complementarity.c_t * v.value;
+    if (!active)
+      {
+        residual(row) += scale * lambda_t;
+        if (with_jacobian)
+          jacobian.add(row, row, scale);
+        return;
+      }
+    if (std::abs(s) < mu * xi)
+      {
+        node.stick = true;
+        ++n_stick;
+        residual(row) += scale * complementarity.c_t * v.value;
+        if (with_jacobian)
+          for (const auto &d : v.derivatives)
+            if (!constraints.is_constrained(d.first))
+              jacobian.add(row, d.first, scale * complementarity.c_t * d.second);
+        return;
+      }
+    ++n_slip;
+    const double sign = s > 0 ? 1. : -1.;
+    residual(row) += scale * (lambda_t - mu * xi * sign);
+    if (with_jacobian)
+      {
+        jacobian.add(row, row, scale);
+        const types::global_dof_index normal_row = pair.secondary.dofs[j][dim];
+        if (!constraints.is_constrained(normal_row))
+          jacobian.add(row, normal_row, -scale * mu * sign);
+        for (const auto &d : constraint.derivatives)
+          if (!constraints.is_constrained(d.first))
+            jacobian.add(row, d.first, scale * mu * sign * d.second);
+      }
+  }
+
+  template <int dim>
+  void
   SurfaceContact<dim>::assemble(const TrialState                &state,
                                 const AffineConstraints<double> &constraints,
                                 const bool                       with_jacobian,
@@ -281,10 +375,15 @@ namespace ContactDynamics
   {
     if (force.size() != state.u.size())
       {
-        force.reinit(state.u);
-        force_committed.reinit(state.u);
+        for (VectorType *v : {&force,
+                              &force_committed,
+                              &friction_force,
+                              &friction_force_committed})
+          v->reinit(state.u);
       }
     force          = 0;
+    friction_force = 0;
+    n_stick = n_slip = 0;
     last_u         = &state.u;
     bool changed   = false;
     n_active       = 0;
@@ -296,6 +395,7 @@ namespace ContactDynamics
         pair.gap.assign(n_nodes, LinearizedValue());
         pair.weight.assign(n_nodes, LinearizedValue());
         pair.gap_rate.assign(n_nodes, LinearizedValue());
+        pair.slip_rate.assign(n_nodes, LinearizedValue());
         for (unsigned int p = 0; p < n_patches(pair); ++p)
           assemble_patch(pair, p, state, constraints, with_jacobian, residual,
                          jacobian, residual_full);
@@ -352,6 +452,11 @@ namespace ContactDynamics
                 if (with_jacobian)
                   jacobian.add(row, row, scale);
               }
+
+            if (pair.friction_coefficient > 0)
+              assemble_friction(pair, j, active, lambda, constraint,
+                                constraints, with_jacobian, residual,
+                                jacobian);
           }
         for (unsigned int j = 0; j < n_nodes; ++j)
           for (unsigned int d = 0; d < 2; ++d)
@@ -381,6 +486,17 @@ namespace ContactDynamics
       work -= ((*last_u)(i) - old_u(i)) * 0.5 *
               (force(i) + (have_state ? force_committed(i) : 0.));
     contact_work += work;
+    if (friction)
+      {
+        double friction_work = 0;
+        for (const auto i : dofs)
+          friction_work -=
+            ((*last_u)(i) - old_u(i)) * 0.5 *
+            (friction_force(i) +
+             (have_state ? friction_force_committed(i) : 0.));
+        frictional_dissipation -= friction_work;
+        friction_force_committed = friction_force;
+      }
     force_committed = force;
     committed_u     = *last_u;
     have_state      = true;
@@ -412,17 +528,29 @@ namespace ContactDynamics
   std::vector<std::string>
   SurfaceContact<dim>::statistics_columns() const
   {
-    return {"active_contact_nodes",
-            "contact_force_x",
-            "contact_force_y",
-            "contact_work"};
+    std::vector<std::string> columns{"active_contact_nodes",
+                                     "contact_force_x",
+                                     "contact_force_y",
+                                     "contact_work"};
+    if (friction)
+      for (const char *c : {"stick_nodes", "slip_nodes", "frictional_dissipation"})
+        columns.emplace_back(c);
+    return columns;
   }
 
   template <int dim>
   std::vector<double>
   SurfaceContact<dim>::statistics() const
   {
-    return {double(n_active), total_force[0], total_force[1], contact_work};
+    std::vector<double> values{double(n_active),
+                               total_force[0],
+                               total_force[1],
+                               contact_work};
+    if (friction)
+      for (const double v :
+           {double(n_stick), double(n_slip), frictional_dissipation})
+        values.push_back(v);
+    return values;
   }
 
   template <int dim>
@@ -432,7 +560,7 @@ namespace ContactDynamics
   {
     std::ofstream out(dir + "/contact_surface-" +
                       Utilities::int_to_string(step, 5) + ".csv");
-    out << "pair,node,x,y,gap,pressure,active\n";
+    out << "pair,node,x,y,gap,pressure,active,tangential_traction,stick\n";
     for (unsigned int p = 0; p < pairs.size(); ++p)
       {
         const auto               &s = pairs[p].secondary;
@@ -451,7 +579,8 @@ namespace ContactDynamics
               have_state ? s.position(j, committed_u) : s.reference[j];
             out << p << ',' << j << ',' << std::setprecision(10) << x[0] << ','
                 << x[1] << ',' << node.normalized_gap() << ',' << node.pressure
-                << ',' << node.active << '\n';
+                << ',' << node.active << ',' << node.tangential << ','
+                << node.stick << '\n';
           }
       }
   }

@@ -50,11 +50,11 @@ namespace ContactDynamics
       return dynamic ? 1. / (beta_ * dt * dt) : 0.;
     }
 
-    /** d v_{n+1} / d u_{n+1} */
+    /** d v_{n+1} / d u_{n+1}; quasi-static: v = (u_{n+1} - u_n) / dt */
     double
     velocity_factor(const double dt) const
     {
-      return dynamic ? gamma_ / (beta_ * dt) : 0.;
+      return dynamic ? gamma_ / (beta_ * dt) : 1. / dt;
     }
 
     /**

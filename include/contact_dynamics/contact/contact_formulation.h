@@ -31,6 +31,7 @@ namespace ContactDynamics
     std::vector<types::boundary_id> secondary;
     std::vector<types::boundary_id> primary;
     std::string                     name; // "secondary: primary" as written
+    double                          friction_coefficient = 0;
   };
 
   struct ContactParameters
@@ -129,6 +130,13 @@ namespace ContactDynamics
     nodal_output_fields() const
     {
       return {};
+    }
+
+    /** Energy dissipated by the contact so far (friction). */
+    virtual double
+    dissipated_energy() const
+    {
+      return 0;
     }
 
     /** Surface CSV files etc. at an output time. */

@@ -58,6 +58,17 @@ namespace ContactDynamics
       return {{(1. - 3. * xi) / 2., (1. + 3. * xi) / 2.}};
     }
 
+    /** The vector turned counterclockwise by 90 degrees (a tangent). */
+    template <typename Number>
+    Vec<Number>
+    rotate(const Vec<Number> &n)
+    {
+      Vec<Number> t;
+      t[0] = -n[1];
+      t[1] = n[0];
+      return t;
+    }
+
     /** Unit outward normal of the face x0 -> x1. */
     template <typename Number>
     Vec<Number>

@@ -26,6 +26,7 @@ namespace ContactDynamics
     bool   persistency       = true;
     double capture_tolerance = 1e-5;
     bool   exact_jacobian    = true;
+    double c_t               = 1e4;
 
     /** Declares the entries with the given default stabilization. */
     static void
@@ -109,6 +110,12 @@ namespace ContactDynamics
     write_output(const std::string &directory,
                  const unsigned int step) override;
 
+    double
+    dissipated_energy() const override
+    {
+      return frictional_dissipation;
+    }
+
     std::vector<std::pair<const VectorType *, std::string>>
     nodal_output_fields() const override
     {
@@ -121,8 +128,11 @@ namespace ContactDynamics
       double gap        = 0; // weighted (mortar) or pointwise gap
       double weight     = 0; // its normalization; 0: no projection
       double pressure   = 0; // lambda_n
+      double tangential = 0; // lambda_t (friction)
+      double slip_rate  = 0; // normalized relative tangential velocity
       bool   projected  = false;
       bool   active     = false;
+      bool   stick      = false; // active and sticking (friction)
       bool   persistent = false; // velocity-level condition next step
 
       /** The gap in length units. */
@@ -152,8 +162,10 @@ namespace ContactDynamics
       std::vector<std::vector<unsigned int>> candidates; // per patch
       std::vector<std::vector<unsigned int>> pattern;    // in the sparsity
       std::vector<NodeState>                 nodes;
-      // per secondary node: gap, its normalization weight, gap rate
-      std::vector<LinearizedValue> gap, weight, gap_rate;
+      // per secondary node: gap, its normalization weight, gap rate,
+      // relative tangential velocity (secondary minus primary)
+      std::vector<LinearizedValue> gap, weight, gap_rate, slip_rate;
+      double                       friction_coefficient = 0;
     };
 
     /** Number of patches of a pair (faces or nodes of the secondary side). */
@@ -189,6 +201,13 @@ namespace ContactDynamics
                    MatrixType                      &jacobian,
                    VectorType                      &residual_full) = 0;
 
+    /** Records the tangential (friction) part of a force row. */
+    void
+    add_tangential_force(const types::global_dof_index row, const double value)
+    {
+      friction_force(row) += value;
+    }
+
     /** A residual row of a contact force with its derivatives. */
     void
     add_force(const types::global_dof_index               row,
@@ -206,6 +225,17 @@ namespace ContactDynamics
     std::vector<PairData>     pairs;
 
   private:
+    void
+    assemble_friction(PairData                        &pair,
+                      const unsigned int               node,
+                      const bool                       active,
+                      const double                     lambda_n,
+                      const LinearizedValue           &constraint,
+                      const AffineConstraints<double> &constraints,
+                      const bool                       with_jacobian,
+                      VectorType                      &residual,
+                      MatrixType                      &jacobian);
+
     std::vector<std::vector<unsigned int>>
     compute_candidates(const PairData   &pair,
                        const VectorType &u,
@@ -215,8 +245,13 @@ namespace ContactDynamics
     std::vector<types::global_dof_index> other_multiplier_dofs;
     bool                                 active_set_changed = true;
 
-    // contact forces at the last assembly and at the last committed step
+    // contact forces (and their friction part) at the last assembly and at
+    // the last committed step
     VectorType   force, force_committed, committed_u;
+    VectorType   friction_force, friction_force_committed;
+    double       frictional_dissipation = 0;
+    bool         friction               = false;
+    unsigned int n_stick = 0, n_slip = 0;
     VectorType   gap_field; // normalized gap at the multiplier dofs
     double       contact_work   = 0;
     unsigned int n_active       = 0;
