@@ -405,12 +405,7 @@ namespace ContactDynamics
     return mechanics->is_linear() && !contact;
   }
 
-  template <int dim>
-  bool
-  Simulator<dim>::converged() const
-  {
-    return !contact || contact->active_set_converged();
-  }
+
 
   template <int dim>
   const MatrixType &
@@ -494,7 +489,10 @@ namespace ContactDynamics
 
     energies = updated;
     if (contact)
-      contact->commit_step(u, t_new);
+      {
+        contact->commit_step(u, t_new);
+        energies.frictional = contact->dissipated_energy();
+      }
     u.swap(u_new);
     v.swap(v_new);
     a.swap(a_new);

@@ -175,7 +175,6 @@ namespace ContactDynamics
       }
     have_state         = false;
     contact_work       = 0;
-    active_set_changed = true;
   }
 
   template <int dim>
@@ -385,7 +384,6 @@ namespace ContactDynamics
     friction_force = 0;
     n_stick = n_slip = 0;
     last_u         = &state.u;
-    bool changed   = false;
     n_active       = 0;
     total_force[0] = total_force[1] = 0;
 
@@ -432,8 +430,6 @@ namespace ContactDynamics
                       factor * g.value * d.second / (w * w);
                 active = (lambda - constraint.value > 0);
               }
-            if (active != node.active)
-              changed = true;
             node.active = active;
             n_active += active;
             if (constraints.is_constrained(row))
@@ -466,7 +462,6 @@ namespace ContactDynamics
     residual_full.compress(VectorOperation::add);
     if (with_jacobian)
       jacobian.compress(VectorOperation::add);
-    active_set_changed = changed;
   }
 
   template <int dim>

@@ -2,12 +2,14 @@
 // projections and segment end points) of the mortar and node-to-segment
 // formulations (the latter also with normal smoothing) against central
 // finite differences of the residual, on the non-matching patch-test
-// interface:
+// interface, and with Coulomb friction in stick and in slip:
 // in contact (tilted penetration, random multipliers), out of contact (open
 // gap, multipliers below c_n times the gap: every node inactive), and
 // with the persistency (gap velocity) condition after an impact. The
 // 'approximate' Jacobian, which drops the geometric derivatives, must
 // differ from the finite differences in contact.
+#include <deal.II/dofs/dof_tools.h>
+
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
 
@@ -20,7 +22,8 @@ using ContactDynamics::VectorType;
 
 namespace
 {
-  std::string formulation = "mortar", smoothing = "0";
+  std::string formulation = "mortar", smoothing = "0", friction = "0";
+  double      tangential_scale = 0; // random lambda_t in this range
 
   std::string
   parameters(const std::string &jacobian,
@@ -61,13 +64,17 @@ subsection Contact
   set Formulation = )" +
            formulation + R"(
   set Pairs = upper_bottom: lower_top
+  set Friction coefficients = )" +
+           friction + R"(
   subsection Mortar
     set c_n = 1000
+    set c_t = 10
     set Jacobian = )" +
            jacobian + R"(
   end
   subsection Node to segment
     set c_n = 1000
+    set c_t = 10
     set Stabilization = persistency
     set Normal smoothing distance = )" +
            smoothing + R"(
@@ -131,12 +138,17 @@ end
     const auto &multipliers = simulator.get_contact()->multiplier_dofs();
     std::set<types::global_dof_index> lambda(multipliers.begin(),
                                              multipliers.end());
+    const auto tangential = DoFTools::extract_dofs(
+      simulator.get_dof_handler(),
+      ComponentMask(std::vector<bool>{false, false, false, true}));
     for (unsigned int i = 0; i < trial.size(); ++i)
       {
         if (lambda.count(i))
           {
             if (steps == 0)
-              trial(i) = lambda_scale * (1.5 + uniform(rng));
+              trial(i) = tangential.is_element(i) ?
+                           tangential_scale * uniform(rng) :
+                           lambda_scale * (1.5 + uniform(rng));
             direction(i) = 100 * uniform(rng);
           }
         else
@@ -152,14 +164,15 @@ end
     const auto *mortar =
       dynamic_cast<const ContactDynamics::SurfaceContact<2> *>(
         simulator.get_contact());
-    unsigned int n_active = 0, n_persistent = 0;
+    unsigned int n_active = 0, n_persistent = 0, n_stick = 0;
     for (const auto &node : mortar->node_states(0))
       {
         n_active += node.active;
         n_persistent += node.persistent;
+        n_stick += node.stick;
       }
     deallog << name << ": active nodes " << n_active << ", persistent nodes "
-            << n_persistent << std::endl;
+            << n_persistent << ", stick nodes " << n_stick << std::endl;
     if (expect_match)
       check_close(name + ": |J d - FD| / |J d|", error, 0., 1e-6);
     else
@@ -198,13 +211,30 @@ check_all(const std::string &prefix)
         true);
 }
 
+void
+check_friction(const std::string &prefix)
+{
+  const std::string tilted = "0.002*x; -0.003 + 0.002*x";
+  friction                 = "0.3";
+  tangential_scale         = 1; // |lambda_t| << mu lambda_n: stick
+  check(prefix + "friction, stick, exact", "exact", "quasi-static", tilted,
+        "0; 0", 0, true);
+  tangential_scale = 500; // |lambda_t| > mu lambda_n: slip
+  check(prefix + "friction, slip, exact", "exact", "quasi-static", tilted,
+        "0; 0", 0, true);
+  friction         = "0";
+  tangential_scale = 0;
+}
+
 int
 main()
 {
   initlog();
   check_all("mortar: ");
+  check_friction("mortar: ");
   formulation = "nts";
   check_all("nts: ");
+  check_friction("nts: ");
   smoothing = "0.5";
   check_all("nts smoothed: ");
 }

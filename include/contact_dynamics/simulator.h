@@ -41,11 +41,12 @@ namespace ContactDynamics
     double dissipated  = 0; // time integral of v.C v
     double external    = 0; // work of reactions and body forces
     double initial     = 0; // kinetic + elastic at t = 0
+    double frictional  = 0; // dissipated by contact friction
 
     double
     error() const
     {
-      return kinetic + elastic + dissipated - external - initial;
+      return kinetic + elastic + dissipated + frictional - external - initial;
     }
   };
 
@@ -151,8 +152,6 @@ namespace ContactDynamics
     apply_update(const VectorType &increment) override;
     bool
     jacobian_is_constant() const override;
-    bool
-    converged() const override;
 
     void
     setup_system();

@@ -101,10 +101,6 @@ namespace ContactDynamics
              MatrixType                      &jacobian,
              VectorType                      &residual_full) = 0;
 
-    /** False while the active set still changes between iterations. */
-    virtual bool
-    active_set_converged() const = 0;
-
     /** Degrees of freedom whose predictor is their old value. */
     virtual const std::vector<types::global_dof_index> &
     multiplier_dofs() const = 0;

@@ -85,12 +85,6 @@ namespace ContactDynamics
              MatrixType                      &jacobian,
              VectorType                      &residual_full) override;
 
-    bool
-    active_set_converged() const override
-    {
-      return !active_set_changed;
-    }
-
     const std::vector<types::global_dof_index> &
     multiplier_dofs() const override
     {
@@ -243,7 +237,6 @@ namespace ContactDynamics
 
     std::vector<types::global_dof_index> normal_multiplier_dofs;
     std::vector<types::global_dof_index> other_multiplier_dofs;
-    bool                                 active_set_changed = true;
 
     // contact forces (and their friction part) at the last assembly and at
     // the last committed step
