@@ -12,7 +12,11 @@
 //   (up to the tilt of the deformed normals);
 // - the energy balance with the frictional dissipation counted closes: the
 //   work of the support = stored energy + frictional dissipation.
-// For the mortar and the node-to-segment formulations.
+// For the mortar and the node-to-segment formulations. Then dynamics: the
+// upper block, pressed by its weight, slides with an initial velocity and is
+// braked by friction; the kinetic energy it loses is the frictional
+// dissipation (the energy balance closes to 1e-3 of it), and its mean
+// deceleration is mu g.
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
 
@@ -132,10 +136,85 @@ end
   }
 } // namespace
 
+void
+braking(const std::string &formulation)
+{
+  // rho = 1, g = 10: weight 5 per unit length on the interface of length 1
+  ParameterHandler prm;
+  read_test_parameters("braking.prm",
+                       R"(
+subsection Scene
+  set Scene = patch test
+end
+subsection Body upper
+  set Young's modulus = 1e4
+  set Poisson's ratio = 0.3
+  set Body force = 0, -10
+  set Initial velocity = 0.5; 0
+  set Rayleigh stiffness coefficient = 1e-3
+end
+subsection Body lower
+  set Young's modulus = 1e4
+  set Poisson's ratio = 0.3
+  set Rayleigh stiffness coefficient = 1e-3
+end
+subsection Boundary conditions
+  set Dirichlet = lower_bottom: xy: 0
+end
+subsection Time integration
+  set Time step = 0.005
+  set End time = 0.1
+end
+subsection Contact
+  set Formulation = )" + formulation + R"(
+  set Pairs = upper_bottom: lower_top
+  set Friction coefficients = 0.3
+  subsection Mortar
+    set c_n = 1e4
+    set c_t = 100
+  end
+  subsection Node to segment
+    set c_n = 1e4
+    set c_t = 100
+    set Stabilization = persistency
+  end
+end
+subsection Output
+  set Output directory = output_braking
+  set VTU interval = 0
+end
+)",
+                       prm);
+  std::ostringstream            screen;
+  ContactDynamics::Simulator<2> simulator(prm, screen);
+  simulator.initialize();
+  for (unsigned int n = 0; n < 20; ++n)
+    if (!simulator.advance(0.005))
+      check_true(formulation + " braking: step converged", false);
+  // mean velocity of the upper block (row-sum lumped masses)
+  double momentum = 0, mass = 0;
+  for (const auto &cell : simulator.get_dof_handler().active_cell_iterators())
+    if (cell->material_id() == 0)
+      for (unsigned int v = 0; v < 4; ++v)
+        {
+          momentum += cell->measure() / 4 *
+                      simulator.velocity()(cell->vertex_dof_index(v, 0));
+          mass += cell->measure() / 4;
+        }
+  const auto &e = simulator.energy();
+  check_true(formulation + " braking: friction dissipates", e.frictional > 0);
+  check_close(formulation + " braking: energy balance error / dissipation",
+              e.error() / e.frictional, 0., 1e-3);
+  check_close(formulation + " braking: deceleration / (mu g)",
+              (0.5 - momentum / mass) / 0.1 / 3., 1., 0.05);
+}
+
 int
 main()
 {
   initlog();
   run("mortar");
   run("nts");
+  braking("mortar");
+  braking("nts");
 }
