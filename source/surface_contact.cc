@@ -409,7 +409,10 @@ namespace ContactDynamics
             node.pressure       = lambda;
             node.gap            = pair.gap[j].value;
             node.weight         = pair.weight[j].value;
-            node.projected      = node.weight > 1e-12 * scale;
+            // a mortar node needs more than half its support covered: on a
+            // sliver the dual function can be negative and turn a clear gap
+            // into a weighted penetration
+            node.projected = node.weight > minimum_coverage() * scale;
 
             // the constraint quantity c * g / w and its derivatives
             LinearizedValue constraint;

@@ -29,6 +29,13 @@ namespace ContactDynamics
   protected:
     using PairData = typename SurfaceContact<dim>::PairData;
 
+    /** More than half of the support of the dual function must be covered. */
+    double
+    minimum_coverage() const override
+    {
+      return 0.5;
+    }
+
     /** A patch is a secondary face. */
     unsigned int
     n_patches(const PairData &pair) const override

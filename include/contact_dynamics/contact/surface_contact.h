@@ -162,6 +162,16 @@ namespace ContactDynamics
       double                       friction_coefficient = 0;
     };
 
+    /**
+     * Fraction of its reference weight a node's weight must reach for the
+     * node to count as projected.
+     */
+    virtual double
+    minimum_coverage() const
+    {
+      return 1e-12;
+    }
+
     /** Number of patches of a pair (faces or nodes of the secondary side). */
     virtual unsigned int
     n_patches(const PairData &pair) const = 0;
