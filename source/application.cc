@@ -66,9 +66,9 @@ namespace ContactDynamics
     declare_dimension(first);
     Scene<2>::declare_parameters(first);
     first.parse_input(filename, "", true);
-    const unsigned int dim    = first.get_integer("Dimension");
-    const SceneLayout  layout = (dim == 2 ? layout_from<2>(first) :
-                                            layout_from<3>(first));
+    const unsigned int dim = first.get_integer("Dimension");
+    const SceneLayout  layout =
+      (dim == 2 ? layout_from<2>(first) : layout_from<3>(first));
 
     declare_dimension(prm);
     if (dim == 2)

@@ -6,7 +6,7 @@
 namespace ContactDynamics
 {
   void
-  BodyParameters::declare_parameters(ParameterHandler &prm,
+  BodyParameters::declare_parameters(ParameterHandler  &prm,
                                      const unsigned int dim)
   {
     MaterialParameters::declare_parameters(prm);
@@ -32,21 +32,19 @@ namespace ContactDynamics
   }
 
   void
-  BodyParameters::parse_parameters(ParameterHandler &prm,
+  BodyParameters::parse_parameters(ParameterHandler  &prm,
                                    const unsigned int dim)
   {
     material.parse_parameters(prm);
     body_force = Utilities::string_to_double(
       Utilities::split_string_list(prm.get("Body force")));
-    initial_displacement = prm.get("Initial displacement");
-    initial_velocity     = prm.get("Initial velocity");
+    initial_displacement    = prm.get("Initial displacement");
+    initial_velocity        = prm.get("Initial velocity");
     const std::string where = subsection_name(name) + "/";
     split_vector_expression(initial_displacement,
                             dim,
                             where + "Initial displacement");
-    split_vector_expression(initial_velocity,
-                            dim,
-                            where + "Initial velocity");
+    split_vector_expression(initial_velocity, dim, where + "Initial velocity");
   }
 
   std::vector<std::string>

@@ -73,7 +73,8 @@ namespace ContactDynamics
         c.surface = Utilities::trim(entry.substr(0, first));
         const std::string components =
           Utilities::trim(entry.substr(first + 1, second - first - 1));
-        const std::string expression = Utilities::trim(entry.substr(second + 1));
+        const std::string expression =
+          Utilities::trim(entry.substr(second + 1));
         try
           {
             c.boundary_id = layout.surface_id(c.surface);
@@ -116,8 +117,9 @@ namespace ContactDynamics
         catch (...)
           {
             AssertThrow(false,
-                        error("has an expression FunctionParser cannot read: '" +
-                              expression + "'"));
+                        error(
+                          "has an expression FunctionParser cannot read: '" +
+                          expression + "'"));
           }
         conditions.push_back(c);
       }
@@ -138,8 +140,11 @@ namespace ContactDynamics
           mask[d] = c.mask[d];
         std::map<types::global_dof_index, double> these;
         const PaddedFunction<dim> padded(*c.function, n_components);
-        VectorTools::interpolate_boundary_values(
-          dof_handler, c.boundary_id, padded, these, ComponentMask(mask));
+        VectorTools::interpolate_boundary_values(dof_handler,
+                                                 c.boundary_id,
+                                                 padded,
+                                                 these,
+                                                 ComponentMask(mask));
         for (const auto &p : these)
           result[p.first] = p.second;
       }

@@ -72,7 +72,8 @@ namespace ContactDynamics
                              "' has an empty side."));
       return ids;
     };
-    for (const auto &entry : Utilities::split_string_list(prm.get("Pairs"), ';'))
+    for (const auto &entry :
+         Utilities::split_string_list(prm.get("Pairs"), ';'))
       {
         const auto colon = entry.find(':');
         AssertThrow(colon != std::string::npos,
@@ -89,7 +90,8 @@ namespace ContactDynamics
                                  "' has a surface on both sides."));
         pairs.push_back(pair);
       }
-    const auto mu = Utilities::split_string_list(prm.get("Friction coefficients"), ';');
+    const auto mu =
+      Utilities::split_string_list(prm.get("Friction coefficients"), ';');
     AssertThrow(mu.size() == 1 || mu.size() == pairs.size(),
                 ExcMessage("'Contact/Friction coefficients' = '" +
                            prm.get("Friction coefficients") + "' has " +
@@ -98,7 +100,7 @@ namespace ContactDynamics
                            std::to_string(pairs.size()) + ")."));
     for (unsigned int p = 0; p < pairs.size(); ++p)
       {
-        const std::string &text = mu[mu.size() == 1 ? 0 : p];
+        const std::string &text  = mu[mu.size() == 1 ? 0 : p];
         double             value = -1;
         try
           {

@@ -15,8 +15,7 @@ namespace ContactDynamics
                              const std::vector<types::boundary_id> &ids,
                              const unsigned int n_node_components)
   {
-    AssertThrow(dim == 2,
-                ExcMessage("Contact is implemented in 2-D only."));
+    AssertThrow(dim == 2, ExcMessage("Contact is implemented in 2-D only."));
     const auto &fe = dof_handler.get_fe();
     reference.clear();
     dofs.clear();
@@ -39,7 +38,7 @@ namespace ContactDynamics
                 const unsigned int cell_vertex =
                   GeometryInfo<dim>::face_to_cell_vertices(f, v);
                 const unsigned int vertex = cell->vertex_index(cell_vertex);
-                auto it = vertex_to_node.find(vertex);
+                auto               it     = vertex_to_node.find(vertex);
                 if (it == vertex_to_node.end())
                   {
                     it = vertex_to_node.emplace(vertex, reference.size()).first;
@@ -47,7 +46,8 @@ namespace ContactDynamics
                     std::vector<types::global_dof_index> node_dofs;
                     for (unsigned int c = 0; c < n_node_components; ++c)
                       node_dofs.push_back(
-                        cell_dofs[fe.component_to_system_index(c, cell_vertex)]);
+                        cell_dofs[fe.component_to_system_index(c,
+                                                               cell_vertex)]);
                     dofs.push_back(node_dofs);
                     node_faces.emplace_back();
                   }

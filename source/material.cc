@@ -47,11 +47,11 @@ namespace ContactDynamics
   void
   MaterialParameters::parse_parameters(ParameterHandler &prm)
   {
-    model                          = prm.get("Material model");
-    youngs_modulus                 = prm.get_double("Young's modulus");
-    poissons_ratio                 = prm.get_double("Poisson's ratio");
-    density                        = prm.get_double("Density");
-    rayleigh_mass_coefficient      = prm.get_double("Rayleigh mass coefficient");
+    model                     = prm.get("Material model");
+    youngs_modulus            = prm.get_double("Young's modulus");
+    poissons_ratio            = prm.get_double("Poisson's ratio");
+    density                   = prm.get_double("Density");
+    rayleigh_mass_coefficient = prm.get_double("Rayleigh mass coefficient");
     rayleigh_stiffness_coefficient =
       prm.get_double("Rayleigh stiffness coefficient");
   }
@@ -125,8 +125,7 @@ namespace ContactDynamics
                double               &energy_density) const override
       {
         const Tensor<2, dim> strain = 0.5 * (grad_u + transpose(grad_u));
-        stress                      = double_contract<2, 0, 3, 1>(
-          this->elasticity_, strain);
+        stress         = double_contract<2, 0, 3, 1>(this->elasticity_, strain);
         tangent        = this->elasticity_;
         energy_density = 0.5 * scalar_product(stress, strain);
       }
@@ -170,12 +169,13 @@ namespace ContactDynamics
                Tensor<4, dim>       &tangent,
                double               &energy_density) const override
       {
-        const Tensor<2, dim> F = Tensor<2, dim>(unit_symmetric_tensor<dim>()) + grad_u;
-        const double         J = determinant(F);
+        const Tensor<2, dim> F =
+          Tensor<2, dim>(unit_symmetric_tensor<dim>()) + grad_u;
+        const double J = determinant(F);
         AssertThrow(J > 0 && std::isfinite(J),
-                    ExcMessage("Inverted element: det F = " +
-                               std::to_string(J) +
-                               " <= 0 in a neo-Hookean body."));
+                    ExcMessage(
+                      "Inverted element: det F = " + std::to_string(J) +
+                      " <= 0 in a neo-Hookean body."));
         const double         lambda = this->parameters_.lame_lambda();
         const double         mu     = this->parameters_.shear_modulus();
         const double         lnJ    = std::log(J);
@@ -201,9 +201,10 @@ namespace ContactDynamics
       Tensor<2, 3>
       cauchy_stress(const Tensor<2, dim> &grad_u) const override
       {
-        const Tensor<2, dim> F = Tensor<2, dim>(unit_symmetric_tensor<dim>()) + grad_u;
-        const double         J = determinant(F);
-        Tensor<2, 3>         sigma;
+        const Tensor<2, dim> F =
+          Tensor<2, dim>(unit_symmetric_tensor<dim>()) + grad_u;
+        const double J = determinant(F);
+        Tensor<2, 3> sigma;
         if (!(J > 0))
           {
             for (unsigned int i = 0; i < 3; ++i)
@@ -241,7 +242,8 @@ namespace ContactDynamics
   double
   von_mises_stress(const Tensor<2, 3> &s)
   {
-    const Tensor<2, 3> dev = s - trace(s) / 3. * Tensor<2, 3>(unit_symmetric_tensor<3>());
+    const Tensor<2, 3> dev =
+      s - trace(s) / 3. * Tensor<2, 3>(unit_symmetric_tensor<3>());
     return std::sqrt(1.5 * scalar_product(dev, dev));
   }
 

@@ -59,10 +59,10 @@ namespace ContactDynamics
 
   template <int dim>
   BoundingBox<dim>
-  MortarContact<dim>::patch_box(const PairData   &pair,
+  MortarContact<dim>::patch_box(const PairData    &pair,
                                 const unsigned int patch,
-                                const VectorType &u,
-                                double           &size) const
+                                const VectorType  &u,
+                                double            &size) const
   {
     const auto      &face = pair.secondary.faces[patch];
     const Point<dim> a    = pair.secondary.position(face[0], u);
@@ -80,8 +80,8 @@ namespace ContactDynamics
     const unsigned int               face,
     const std::vector<unsigned int> &primary_faces) const
   {
-    const auto &s = pair.secondary;
-    const auto &f = s.faces[face];
+    const auto                          &s = pair.secondary;
+    const auto                          &f = s.faces[face];
     std::vector<types::global_dof_index> unknowns;
     for (const unsigned int n :
          {s.neighbour(f[0], face), f[0], f[1], s.neighbour(f[1], face)})
@@ -100,14 +100,15 @@ namespace ContactDynamics
 
   template <int dim>
   void
-  MortarContact<dim>::assemble_patch(PairData                        &pair,
-                                     const unsigned int               e,
-                                     const TrialState                &state,
-                                     const AffineConstraints<double> &constraints,
-                                     const bool                       with_jacobian,
-                                     VectorType                      &residual,
-                                     MatrixType                      &jacobian,
-                                     VectorType &residual_full)
+  MortarContact<dim>::assemble_patch(
+    PairData                        &pair,
+    const unsigned int               e,
+    const TrialState                &state,
+    const AffineConstraints<double> &constraints,
+    const bool                       with_jacobian,
+    VectorType                      &residual,
+    MatrixType                      &jacobian,
+    VectorType                      &residual_full)
   {
     const auto &s        = pair.secondary;
     const auto &p        = pair.primary;
@@ -119,8 +120,8 @@ namespace ContactDynamics
     // and their neighbours, of the primary nodes, then the multipliers
     ContactAD::NodeVariables<dim>   variables(unknowns, state);
     std::map<unsigned int, Vec<AD>> xs, vs, xp, vp;
-    const unsigned int before = s.neighbour(face[0], e);
-    const unsigned int after  = s.neighbour(face[1], e);
+    const unsigned int              before = s.neighbour(face[0], e);
+    const unsigned int              after  = s.neighbour(face[1], e);
     for (const unsigned int node : {before, face[0], face[1], after})
       if (node != ContactSurface<dim>::invalid)
         variables.add(s, node, xs[node], vs[node]);
@@ -145,16 +146,17 @@ namespace ContactDynamics
     };
     const Vec<AD> &x0 = xs.at(face[0]), &x1 = xs.at(face[1]);
     const Vec<AD>  n0 = nodal_normal(face[0]), n1 = nodal_normal(face[1]);
-    const Vec<AD>  face_n = MortarGeometry::face_normal(x0, x1);
+    const Vec<AD>  face_n      = MortarGeometry::face_normal(x0, x1);
     const AD       half_length = MortarGeometry::norm(Vec<AD>(x1 - x0)) / 2.;
 
-    const Vec<AD> t0 = MortarGeometry::rotate(n0), t1 = MortarGeometry::rotate(n1);
+    const Vec<AD> t0 = MortarGeometry::rotate(n0),
+                  t1 = MortarGeometry::rotate(n1);
     std::map<types::global_dof_index, AD>     rows; // residual contributions
     std::map<types::global_dof_index, double> tangential_rows;
     AD gap[2], weight[2], gap_rate[2], slip_rate[2];
     for (unsigned int i = 0; i < 2; ++i)
       gap[i] = weight[i] = gap_rate[i] = slip_rate[i] = AD(0.);
-    const bool friction = pair.friction_coefficient > 0;
+    const bool      friction = pair.friction_coefficient > 0;
     const QGauss<1> gauss(quadrature_points);
 
     for (const unsigned int pf : pair.candidates[e])
@@ -164,20 +166,33 @@ namespace ContactDynamics
         if (value(MortarGeometry::face_normal(y0, y1)) * value(face_n) > -0.5)
           continue;
         double xi_c, xi_d;
-        if (!MortarGeometry::project_along_normal_field(
-              value(x0), value(x1), value(n0), value(n1), value(y0), xi_c) ||
-            !MortarGeometry::project_along_normal_field(
-              value(x0), value(x1), value(n0), value(n1), value(y1), xi_d))
+        if (!MortarGeometry::project_along_normal_field(value(x0),
+                                                        value(x1),
+                                                        value(n0),
+                                                        value(n1),
+                                                        value(y0),
+                                                        xi_c) ||
+            !MortarGeometry::project_along_normal_field(value(x0),
+                                                        value(x1),
+                                                        value(n0),
+                                                        value(n1),
+                                                        value(y1),
+                                                        xi_d))
           continue;
         const double lo_v = std::max(-1., std::min(xi_c, xi_d));
         const double hi_v = std::min(1., std::max(xi_c, xi_d));
         if (hi_v - lo_v < 1e-12)
           continue;
-        const auto end = [&](const double bound, const Vec<AD> &y,
-                             const double xi) -> AD {
+        const auto end =
+          [&](const double bound, const Vec<AD> &y, const double xi) -> AD {
           if (std::abs(bound - xi) > 0 || !exact)
             return AD(bound);
-          return MortarGeometry::project_along_normal_field(x0, x1, n0, n1, y, xi);
+          return MortarGeometry::project_along_normal_field(x0,
+                                                            x1,
+                                                            n0,
+                                                            n1,
+                                                            y,
+                                                            xi);
         };
         const AD lo = (lo_v == std::min(xi_c, xi_d)) ?
                         end(lo_v, xi_c < xi_d ? y0 : y1, std::min(xi_c, xi_d)) :
@@ -188,11 +203,11 @@ namespace ContactDynamics
 
         for (unsigned int q = 0; q < gauss.size(); ++q)
           {
-            const AD xi = lo + (hi - lo) * gauss.point(q)[0];
-            const AD JxW = gauss.weight(q) * (hi - lo) * half_length;
-            const auto N   = MortarGeometry::shape(xi);
-            const auto psi = MortarGeometry::dual_shape(xi);
-            const Vec<AD> x = N[0] * x0 + N[1] * x1;
+            const AD      xi     = lo + (hi - lo) * gauss.point(q)[0];
+            const AD      JxW    = gauss.weight(q) * (hi - lo) * half_length;
+            const auto    N      = MortarGeometry::shape(xi);
+            const auto    psi    = MortarGeometry::dual_shape(xi);
+            const Vec<AD> x      = N[0] * x0 + N[1] * x1;
             Vec<AD>       normal = N[0] * n0 + N[1] * n1;
             normal /= MortarGeometry::norm(normal);
             AD eta =
@@ -213,17 +228,16 @@ namespace ContactDynamics
               {
                 const Vec<AD> v_s =
                   N[0] * vs.at(face[0]) + N[1] * vs.at(face[1]);
-                const Vec<AD> v_p = Np[0] * vp.at(p.faces[pf][0]) +
-                                    Np[1] * vp.at(p.faces[pf][1]);
+                const Vec<AD> v_p =
+                  Np[0] * vp.at(p.faces[pf][0]) + Np[1] * vp.at(p.faces[pf][1]);
                 const Vec<AD> v_rel = v_s - v_p;
                 for (unsigned int i = 0; i < 2; ++i)
                   {
                     if (rates)
                       gap_rate[i] -= psi[i] * (v_rel * normal) * JxW;
                     if (friction)
-                      slip_rate[i] += psi[i] *
-                                      (v_rel * MortarGeometry::rotate(normal)) *
-                                      JxW;
+                      slip_rate[i] +=
+                        psi[i] * (v_rel * MortarGeometry::rotate(normal)) * JxW;
                   }
               }
             // contact traction z = sum_j psi_j (lambda_j n_j + lambda_t,j

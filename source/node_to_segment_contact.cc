@@ -66,10 +66,10 @@ namespace ContactDynamics
 
   template <int dim>
   BoundingBox<dim>
-  NodeToSegmentContact<dim>::patch_box(const PairData   &pair,
+  NodeToSegmentContact<dim>::patch_box(const PairData    &pair,
                                        const unsigned int node,
-                                       const VectorType &u,
-                                       double           &size) const
+                                       const VectorType  &u,
+                                       double            &size) const
   {
     const Point<dim> x = pair.secondary.position(node, u);
     size               = pair.secondary.reference_weight[node] * 2;
@@ -153,8 +153,7 @@ namespace ContactDynamics
         if (MortarGeometry::face_normal(y0, y1) * n_s >= 0)
           continue;
         const double eta_free = (value(x) - m) * t / (t * t);
-        if (f == previous[j] &&
-            std::abs(eta_free) <= 1 + tangential_tolerance)
+        if (f == previous[j] && std::abs(eta_free) <= 1 + tangential_tolerance)
           {
             best     = f;
             best_eta = eta_free;
@@ -168,9 +167,8 @@ namespace ContactDynamics
             best_distance = distance;
             // within the tolerance the projection extends the face, as it
             // does for a kept face
-            best_eta = std::abs(eta_free) <= 1 + tangential_tolerance ?
-                         eta_free :
-                         eta;
+            best_eta =
+              std::abs(eta_free) <= 1 + tangential_tolerance ? eta_free : eta;
           }
       }
     previous[j] = best;
@@ -179,9 +177,9 @@ namespace ContactDynamics
 
     const unsigned int c = p.faces[best][0], d = p.faces[best][1];
     const Vec<AD>     &y0 = xp.at(c), &y1 = xp.at(d);
-    const Vec<AD>      t  = (y1 - y0) / 2.;
-    const Vec<AD>      m  = (y0 + y1) / 2.;
-    AD eta = (x - m) * t / (t * t);
+    const Vec<AD>      t   = (y1 - y0) / 2.;
+    const Vec<AD>      m   = (y0 + y1) / 2.;
+    AD                 eta = (x - m) * t / (t * t);
     if (std::abs(eta.val() - best_eta) > 1e-12 || !exact)
       eta = AD(best_eta); // clamped at a face end, or approximate
     Vec<AD> normal = MortarGeometry::face_normal(y0, y1);
@@ -193,7 +191,8 @@ namespace ContactDynamics
         const Vec<AD> face_normal = normal;
         for (const unsigned int end : {0u, 1u})
           {
-            const AD to_end = end == 0 ? AD((1. + eta) / 2.) : AD((1. - eta) / 2.);
+            const AD to_end =
+              end == 0 ? AD((1. + eta) / 2.) : AD((1. - eta) / 2.);
             const unsigned int node  = p.faces[best][end];
             const unsigned int other = p.neighbour(node, best);
             if (to_end.val() >= smoothing_distance ||
@@ -203,7 +202,8 @@ namespace ContactDynamics
             const Vec<AD> n_other =
               end == 0 ? MortarGeometry::face_normal(xp.at(other), y0) :
                          MortarGeometry::face_normal(y1, xp.at(other));
-            const AD weight = (smoothing_distance - to_end) / smoothing_distance;
+            const AD weight =
+              (smoothing_distance - to_end) / smoothing_distance;
             normal += AD(weight / 2.) * (n_other - face_normal);
           }
         normal /= MortarGeometry::norm(normal);
@@ -223,7 +223,8 @@ namespace ContactDynamics
     if ((this->complementarity.persistency && state.dynamic) || friction)
       {
         const Vec<AD> v_rel = v - (N[0] * vp.at(c) + N[1] * vp.at(d));
-        ContactAD::add_to(pair.gap_rate[j], AD(-(v_rel * n_secondary)),
+        ContactAD::add_to(pair.gap_rate[j],
+                          AD(-(v_rel * n_secondary)),
                           unknowns);
         if (friction)
           ContactAD::add_to(pair.slip_rate[j], AD(v_rel * tangent), unknowns);
@@ -253,8 +254,10 @@ namespace ContactDynamics
         if (friction)
           {
             this->add_tangential_force(s.dofs[j][k], f_t[k].val());
-            this->add_tangential_force(p.dofs[c][k], -N[0].val() * f_t[k].val());
-            this->add_tangential_force(p.dofs[d][k], -N[1].val() * f_t[k].val());
+            this->add_tangential_force(p.dofs[c][k],
+                                       -N[0].val() * f_t[k].val());
+            this->add_tangential_force(p.dofs[d][k],
+                                       -N[1].val() * f_t[k].val());
           }
       }
   }

@@ -1,8 +1,7 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
 
 #include <contact_dynamics/nonlinear_solver.h>
-
-#include <deal.II/base/utilities.h>
 
 #include <cmath>
 #include <iomanip>
@@ -74,7 +73,7 @@ namespace ContactDynamics
           {
             std::ostringstream message;
             e.print_info(message);
-            result.failure       = Utilities::trim(message.str());
+            result.failure      = Utilities::trim(message.str());
             factorization_valid = false;
             return result;
           }
@@ -94,7 +93,7 @@ namespace ContactDynamics
               << std::defaultfloat << std::endl;
         if (!std::isfinite(norm))
           {
-            result.failure = "the residual is not a finite number";
+            result.failure      = "the residual is not a finite number";
             factorization_valid = false;
             return result;
           }
@@ -117,13 +116,15 @@ namespace ContactDynamics
           {
             if (need_jacobian)
               {
-                solver_control = std::make_unique<SolverControl>(1, 0, false, false);
-                direct_solver = std::make_unique<TrilinosWrappers::SolverDirect>(
-                  *solver_control,
-                  TrilinosWrappers::SolverDirect::AdditionalData(
-                    false,
-                    linear_solver == "MUMPS" ? "Amesos_Mumps" :
-                                               "Amesos_Klu"));
+                solver_control =
+                  std::make_unique<SolverControl>(1, 0, false, false);
+                direct_solver =
+                  std::make_unique<TrilinosWrappers::SolverDirect>(
+                    *solver_control,
+                    TrilinosWrappers::SolverDirect::AdditionalData(
+                      false,
+                      linear_solver == "MUMPS" ? "Amesos_Mumps" :
+                                                 "Amesos_Klu"));
                 direct_solver->initialize(jacobian);
                 factorization_valid = reuse;
               }
@@ -133,8 +134,8 @@ namespace ContactDynamics
           }
         catch (const std::exception &e)
           {
-            result.failure = std::string("the linear solver failed: ") +
-                             e.what();
+            result.failure =
+              std::string("the linear solver failed: ") + e.what();
             factorization_valid = false;
             return result;
           }

@@ -82,10 +82,9 @@ namespace ContactDynamics
       void
       evaluate_vector_field(
         const DataPostprocessorInputs::Vector<dim> &inputs,
-        std::vector<Vector<double>> &computed) const override
+        std::vector<Vector<double>>                &computed) const override
       {
-        const auto cell =
-          inputs.template get_cell<dim>();
+        const auto           cell     = inputs.template get_cell<dim>();
         const Material<dim> &material = mechanics.material(cell->material_id());
         for (unsigned int q = 0; q < computed.size(); ++q)
           {
@@ -136,7 +135,7 @@ namespace ContactDynamics
       void
       evaluate_vector_field(
         const DataPostprocessorInputs::Vector<dim> &inputs,
-        std::vector<Vector<double>> &computed) const override
+        std::vector<Vector<double>>                &computed) const override
       {
         for (unsigned int q = 0; q < computed.size(); ++q)
           computed[q](0) = inputs.solution_values[q](component);
@@ -158,7 +157,7 @@ namespace ContactDynamics
       void
       evaluate_vector_field(
         const DataPostprocessorInputs::Vector<dim> &inputs,
-        std::vector<Vector<double>> &computed) const override
+        std::vector<Vector<double>>                &computed) const override
       {
         for (unsigned int q = 0; q < computed.size(); ++q)
           for (unsigned int d = 0; d < dim; ++d)
@@ -170,26 +169,27 @@ namespace ContactDynamics
 
 
   template <int dim>
-  SolutionWriter<dim>::SolutionWriter(const std::string              &directory,
-                                      const std::vector<std::string> &extra_names)
+  SolutionWriter<dim>::SolutionWriter(
+    const std::string              &directory,
+    const std::vector<std::string> &extra_names)
     : directory(directory)
     , extra_names(extra_names)
   {}
 
   template <int dim>
   void
-  SolutionWriter<dim>::write(const DoFHandler<dim>     &dof_handler,
-                             const SolidMechanics<dim> &mechanics,
-                             const VectorType          &displacement,
-                             const VectorType          &velocity,
-                             const double               time,
-                             const unsigned int         step,
-                             const std::vector<std::pair<const VectorType *, std::string>>
-                               &nodal_fields)
+  SolutionWriter<dim>::write(
+    const DoFHandler<dim>                                         &dof_handler,
+    const SolidMechanics<dim>                                     &mechanics,
+    const VectorType                                              &displacement,
+    const VectorType                                              &velocity,
+    const double                                                   time,
+    const unsigned int                                             step,
+    const std::vector<std::pair<const VectorType *, std::string>> &nodal_fields)
   {
     const unsigned int n_components = dof_handler.get_fe().n_components();
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      interpretation(n_components,
+                             interpretation(n_components,
                      DataComponentInterpretation::component_is_scalar);
     std::vector<std::string> u_names(n_components);
     for (unsigned int d = 0; d < dim; ++d)

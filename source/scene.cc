@@ -61,7 +61,9 @@ namespace ContactDynamics
     // by bisection. Falls back to uniform steps if the first step is already
     // too long for a growing sequence.
     std::vector<double>
-    geometric_steps(const double length, const double first, const unsigned int n)
+    geometric_steps(const double       length,
+                    const double       first,
+                    const unsigned int n)
     {
       if (n == 1 || first * n >= length)
         return uniform_steps(length, n);
@@ -77,7 +79,7 @@ namespace ContactDynamics
         hi *= 2;
       for (unsigned int it = 0; it < 200; ++it)
         {
-          const double mid = 0.5 * (lo + hi);
+          const double mid              = 0.5 * (lo + hi);
           (sum(mid) < length ? lo : hi) = mid;
         }
       std::vector<double> steps(n);
@@ -97,7 +99,8 @@ namespace ContactDynamics
     n_growing_steps(const double length, const double h, const double r)
     {
       return static_cast<unsigned int>(
-        std::max(1.0, std::ceil(std::log(1 + length * (r - 1) / h) / std::log(r))));
+        std::max(1.0,
+                 std::ceil(std::log(1 + length * (r - 1) / h) / std::log(r))));
     }
 
     std::vector<double>
@@ -121,8 +124,8 @@ namespace ContactDynamics
     template <int dim>
     struct BodyMesh
     {
-      std::vector<Point<dim>>                         vertices;
-      std::vector<CellData<dim>>                      cells;
+      std::vector<Point<dim>>                        vertices;
+      std::vector<CellData<dim>>                     cells;
       std::function<std::string(const Point<dim> &)> surface_of;
 
       // A surface on a circle (cylinder) that gets a SphericalManifold.
@@ -134,7 +137,9 @@ namespace ContactDynamics
     // (/front/back in 3-D).
     template <int dim>
     std::function<std::string(const Point<dim> &)>
-    box_surfaces(const Point<dim> &p0, const Point<dim> &p1, const std::string &prefix)
+    box_surfaces(const Point<dim>  &p0,
+                 const Point<dim>  &p1,
+                 const std::string &prefix)
     {
       const double tol = 1e-8 * p0.distance(p1);
       return [p0, p1, prefix, tol](const Point<dim> &c) -> std::string {
@@ -160,13 +165,14 @@ namespace ContactDynamics
                    const std::string         &prefix)
     {
       // Node coordinates; the last one is set exactly to avoid round-off.
-      const auto nodes = [](const double a, const double b, const std::vector<double> &steps) {
-        std::vector<double> x(1, a);
-        for (const double s : steps)
-          x.push_back(x.back() + s);
-        x.back() = b;
-        return x;
-      };
+      const auto nodes =
+        [](const double a, const double b, const std::vector<double> &steps) {
+          std::vector<double> x(1, a);
+          for (const double s : steps)
+            x.push_back(x.back() + s);
+          x.back() = b;
+          return x;
+        };
       const std::vector<double> xs = nodes(p0[0], p1[0], x_steps);
       const std::vector<double> ys = nodes(p0[1], p1[1], y_steps);
 
@@ -219,7 +225,9 @@ namespace ContactDynamics
     Curve
     segment(const Point<2> &a, const Point<2> &b)
     {
-      return [a, b](const double s) { return Point<2>(a + s * (b - a)); };
+      return [a, b](const double s) {
+        return Point<2>(a + s * (b - a));
+      };
     }
 
     class PatchMesher
@@ -240,7 +248,8 @@ namespace ContactDynamics
                 const unsigned int ns,
                 const unsigned int nt)
       {
-        const Point<2> p00 = bottom(0), p10 = bottom(1), p01 = top(0), p11 = top(1);
+        const Point<2> p00 = bottom(0), p10 = bottom(1), p01 = top(0),
+                       p11 = top(1);
         std::vector<unsigned int> index((ns + 1) * (nt + 1));
         for (unsigned int j = 0; j <= nt; ++j)
           for (unsigned int i = 0; i <= ns; ++i)
@@ -260,8 +269,9 @@ namespace ContactDynamics
                 {
                   const Point<2> p((1 - t) * bottom(s) + t * top(s) +
                                    (1 - s) * left(t) + s * right(t) -
-                                   ((1 - s) * (1 - t) * p00 + s * (1 - t) * p10 +
-                                    (1 - s) * t * p01 + s * t * p11));
+                                   ((1 - s) * (1 - t) * p00 +
+                                    s * (1 - t) * p10 + (1 - s) * t * p01 +
+                                    s * t * p11));
                   index[j * (ns + 1) + i] = body.vertices.size();
                   body.vertices.push_back(p);
                 }
@@ -334,25 +344,28 @@ namespace ContactDynamics
       const auto arc = [=](const double theta0, const double theta1) -> Curve {
         return [=](const double s) {
           return s == 0 ? arc_point(theta0) :
-                          s == 1 ? arc_point(theta1) :
-                                   arc_point(theta0 + s * (theta1 - theta0));
+                 s == 1 ? arc_point(theta1) :
+                          arc_point(theta0 + s * (theta1 - theta0));
         };
       };
 
-      const double pi = numbers::PI;
+      const double pi   = numbers::PI;
       const double t180 = pi, t225 = 1.25 * pi, t315 = 1.75 * pi, t360 = 2 * pi;
 
       // Corners of the core.
-      const Point<2> c_ll(cx - a, cy - a), c_lr(cx + a, cy - a), c_ul(cx - a, cy),
-        c_ur(cx + a, cy);
+      const Point<2> c_ll(cx - a, cy - a), c_lr(cx + a, cy - a),
+        c_ul(cx - a, cy), c_ur(cx + a, cy);
 
-      PatchMesher mesher(1e-8 * R);
+      PatchMesher        mesher(1e-8 * R);
       const unsigned int n90 = 2 * n45;
 
       // Outer blocks: s runs along the arc with increasing angle, t from the
       // arc (t = 0) to the core (t = 1); this is right-handed.
-      const auto outer = [&](const double th0, const double th1, const Point<2> &q0,
-                             const Point<2> &q1, const unsigned int ns) {
+      const auto outer = [&](const double       th0,
+                             const double       th1,
+                             const Point<2>    &q0,
+                             const Point<2>    &q1,
+                             const unsigned int ns) {
         mesher.add_patch(arc(th0, th1),
                          segment(q0, q1),
                          segment(arc_point(th0), q0),
@@ -365,29 +378,37 @@ namespace ContactDynamics
       outer(t315, t360, c_lr, c_ur, n45);
 
       // Core: s along x, t along y.
-      mesher.add_patch(segment(c_ll, c_lr), segment(c_ul, c_ur),
-                       segment(c_ll, c_ul), segment(c_lr, c_ur), n90, n45);
+      mesher.add_patch(segment(c_ll, c_lr),
+                       segment(c_ul, c_ur),
+                       segment(c_ll, c_ul),
+                       segment(c_lr, c_ur),
+                       n90,
+                       n45);
 
       // Rectangle on top of the diameter, three blocks matching the nodes on
       // y = cy.
       if (rectangle_height > 0)
         {
-          const double xs[4] = {cx - R, cx - a, cx + a, cx + R};
-          const unsigned int n[3] = {n_radial, n90, n_radial};
-          const double y1 = cy + rectangle_height;
+          const double       xs[4] = {cx - R, cx - a, cx + a, cx + R};
+          const unsigned int n[3]  = {n_radial, n90, n_radial};
+          const double       y1    = cy + rectangle_height;
           for (unsigned int b = 0; b < 3; ++b)
             {
               const Point<2> p00(xs[b], cy), p10(xs[b + 1], cy), p01(xs[b], y1),
                 p11(xs[b + 1], y1);
-              mesher.add_patch(segment(p00, p10), segment(p01, p11),
-                               segment(p00, p01), segment(p10, p11), n[b], n_up);
+              mesher.add_patch(segment(p00, p10),
+                               segment(p01, p11),
+                               segment(p00, p01),
+                               segment(p10, p11),
+                               n[b],
+                               n_up);
             }
         }
 
-      BodyMesh<2> body = std::move(mesher.body);
-      const double tol = 1e-8 * R;
+      BodyMesh<2>  body  = std::move(mesher.body);
+      const double tol   = 1e-8 * R;
       const double y_top = cy + rectangle_height;
-      body.surface_of = [=](const Point<2> &c) -> std::string {
+      body.surface_of    = [=](const Point<2> &c) -> std::string {
         if (rectangle_height > 0 && std::abs(c[1] - y_top) < tol)
           return names.top;
         if (rectangle_height > 0 && c[1] > cy + tol)
@@ -416,7 +437,9 @@ namespace ContactDynamics
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
           const unsigned int offset = vertices.size();
-          vertices.insert(vertices.end(), bodies[b].vertices.begin(), bodies[b].vertices.end());
+          vertices.insert(vertices.end(),
+                          bodies[b].vertices.begin(),
+                          bodies[b].vertices.end());
           for (CellData<dim> cell : bodies[b].cells)
             {
               for (unsigned int &v : cell.vertices)
@@ -435,7 +458,8 @@ namespace ContactDynamics
               const BodyMesh<dim> &body = bodies[cell->material_id()];
               const std::string    name = body.surface_of(face->center());
               Assert(!name.empty(),
-                     ExcInternalError("A boundary face belongs to no surface."));
+                     ExcInternalError(
+                       "A boundary face belongs to no surface."));
               face->set_boundary_id(layout.surface_id(name));
               if (!body.curved_surface.empty() && name == body.curved_surface)
                 face->set_manifold_id(1 + cell->material_id());
@@ -444,7 +468,9 @@ namespace ContactDynamics
       // Refinement keeps curved surfaces on their circles.
       for (unsigned int b = 0; b < bodies.size(); ++b)
         if (!bodies[b].curved_surface.empty())
-          triangulation.set_manifold(1 + b, SphericalManifold<dim>(bodies[b].curve_center));
+          triangulation.set_manifold(1 + b,
+                                     SphericalManifold<dim>(
+                                       bodies[b].curve_center));
     }
 
     // ----------------------------------------------------------------------
@@ -467,8 +493,9 @@ namespace ContactDynamics
     read_physical_names(const std::string &file, const int dim)
     {
       AssertThrow(!file.empty(),
-                  ExcMessage("The scene 'gmsh' needs a mesh file, but the parameter "
-                             "Scene/Mesh file is empty. Give the path of a .msh file."));
+                  ExcMessage(
+                    "The scene 'gmsh' needs a mesh file, but the parameter "
+                    "Scene/Mesh file is empty. Give the path of a .msh file."));
       std::ifstream in(file);
       AssertThrow(in,
                   ExcMessage("Cannot open the mesh file '" + file +
@@ -480,7 +507,8 @@ namespace ContactDynamics
         if (Utilities::trim(line) == "$PhysicalNames")
           {
             std::getline(in, line);
-            const unsigned int n = Utilities::string_to_int(Utilities::trim(line));
+            const unsigned int n =
+              Utilities::string_to_int(Utilities::trim(line));
             for (unsigned int i = 0; i < n && std::getline(in, line); ++i)
               {
                 std::istringstream words(line);
@@ -488,10 +516,12 @@ namespace ContactDynamics
                 words >> d >> tag;
                 const auto first = line.find('"'), last = line.rfind('"');
                 AssertThrow(words && first != std::string::npos && last > first,
-                            ExcMessage(mesh_file_error_prefix(file) +
-                                       "has a malformed line in $PhysicalNames: '" +
-                                       line + "'."));
-                const std::string name = line.substr(first + 1, last - first - 1);
+                            ExcMessage(
+                              mesh_file_error_prefix(file) +
+                              "has a malformed line in $PhysicalNames: '" +
+                              line + "'."));
+                const std::string name =
+                  line.substr(first + 1, last - first - 1);
                 if (d == dim)
                   names.bodies[tag] = name;
                 else if (d == dim - 1)
@@ -500,11 +530,13 @@ namespace ContactDynamics
             break;
           }
 
-      AssertThrow(!names.bodies.empty(),
-                  ExcMessage(mesh_file_error_prefix(file) + "has no physical names of dimension " +
-                             std::to_string(dim) +
-                             ". Name the bodies with physical groups of the cells (Physical " +
-                             (dim == 2 ? "Surface" : "Volume") + " in Gmsh)."));
+      AssertThrow(
+        !names.bodies.empty(),
+        ExcMessage(
+          mesh_file_error_prefix(file) + "has no physical names of dimension " +
+          std::to_string(dim) +
+          ". Name the bodies with physical groups of the cells (Physical " +
+          (dim == 2 ? "Surface" : "Volume") + " in Gmsh)."));
       return names;
     }
 
@@ -514,9 +546,11 @@ namespace ContactDynamics
       SceneLayout layout;
       for (const auto &[tag, name] : names.bodies)
         {
-          AssertThrow(std::find(layout.body_names.begin(), layout.body_names.end(), name) ==
-                        layout.body_names.end(),
-                      ExcMessage(mesh_file_error_prefix(file) + "names two bodies '" + name +
+          AssertThrow(std::find(layout.body_names.begin(),
+                                layout.body_names.end(),
+                                name) == layout.body_names.end(),
+                      ExcMessage(mesh_file_error_prefix(file) +
+                                 "names two bodies '" + name +
                                  "'; body names must be unique."));
           layout.body_names.push_back(name);
         }
@@ -524,8 +558,9 @@ namespace ContactDynamics
       for (const auto &[tag, name] : names.surfaces)
         {
           AssertThrow(layout.surfaces.count(name) == 0,
-                      ExcMessage(mesh_file_error_prefix(file) + "names two surfaces '" +
-                                 name + "'; surface names must be unique."));
+                      ExcMessage(mesh_file_error_prefix(file) +
+                                 "names two surfaces '" + name +
+                                 "'; surface names must be unique."));
           layout.surfaces[name] = id++;
         }
       return layout;
@@ -534,7 +569,8 @@ namespace ContactDynamics
     // Builds the layout from a list of names: body i -> material id i,
     // surface k -> boundary id k.
     SceneLayout
-    make_layout(const std::vector<std::string> &bodies, const std::vector<std::string> &surfaces)
+    make_layout(const std::vector<std::string> &bodies,
+                const std::vector<std::string> &surfaces)
     {
       SceneLayout layout;
       layout.body_names = bodies;
@@ -547,7 +583,8 @@ namespace ContactDynamics
     box_surface_names(const std::string &prefix, const unsigned int dim)
     {
       std::vector<std::string> names;
-      for (const char *side : {"left", "right", "bottom", "top", "front", "back"})
+      for (const char *side :
+           {"left", "right", "bottom", "top", "front", "back"})
         if (names.size() < 2 * dim)
           names.push_back(prefix + side);
       return names;
@@ -564,8 +601,9 @@ namespace ContactDynamics
   {
     const auto it = std::find(body_names.begin(), body_names.end(), name);
     AssertThrow(it != body_names.end(),
-                ExcMessage("Unknown body '" + name + "'. The scene has the bodies: " +
-                           join(body_names) + "."));
+                ExcMessage("Unknown body '" + name +
+                           "'. The scene has the bodies: " + join(body_names) +
+                           "."));
     return it - body_names.begin();
   }
 
@@ -581,8 +619,9 @@ namespace ContactDynamics
         for (const auto &surface : surfaces)
           known.push_back(surface.first);
         AssertThrow(false,
-                    ExcMessage("Unknown surface '" + name + "'. The scene has the surfaces: " +
-                               join(known) + "."));
+                    ExcMessage("Unknown surface '" + name +
+                               "'. The scene has the surfaces: " + join(known) +
+                               "."));
       }
     return it->second;
   }
@@ -598,94 +637,113 @@ namespace ContactDynamics
   {
     prm.enter_subsection("Scene");
     {
-      prm.declare_entry("Scene",
-                        "bouncing block",
-                        Patterns::Selection(
-                          "bouncing block|ironing|patch test|hertz|bar impact|block|gmsh"),
-                        "The geometry. The built-in scenes 'bouncing block', 'ironing', "
-                        "'patch test', 'hertz' and 'bar impact' are 2-D; 'block' (one box, "
-                        "see subsection Block) and 'gmsh' (read from Mesh file) work in 2-D "
-                        "and 3-D.");
-      prm.declare_entry("Refinement factor",
-                        "1",
-                        Patterns::Double(0.05, 64),
-                        "Multiplies every element count of a built-in scene (each count "
-                        "becomes max(1, round(count*factor))). Not used for 'gmsh'.");
-      prm.declare_entry("Mesh file",
-                        "",
-                        Patterns::Anything(),
-                        "Gmsh .msh file (format 2.2 or 4, ASCII) for the scene 'gmsh'. "
-                        "Physical groups of the cells are the bodies (numbered in the order "
-                        "of their tags), physical groups of the boundary faces are the "
-                        "surfaces; all of them need a name in $PhysicalNames.");
+      prm.declare_entry(
+        "Scene",
+        "bouncing block",
+        Patterns::Selection(
+          "bouncing block|ironing|patch test|hertz|bar impact|block|gmsh"),
+        "The geometry. The built-in scenes 'bouncing block', 'ironing', "
+        "'patch test', 'hertz' and 'bar impact' are 2-D; 'block' (one box, "
+        "see subsection Block) and 'gmsh' (read from Mesh file) work in 2-D "
+        "and 3-D.");
+      prm.declare_entry(
+        "Refinement factor",
+        "1",
+        Patterns::Double(0.05, 64),
+        "Multiplies every element count of a built-in scene (each count "
+        "becomes max(1, round(count*factor))). Not used for 'gmsh'.");
+      prm.declare_entry(
+        "Mesh file",
+        "",
+        Patterns::Anything(),
+        "Gmsh .msh file (format 2.2 or 4, ASCII) for the scene 'gmsh'. "
+        "Physical groups of the cells are the bodies (numbered in the order "
+        "of their tags), physical groups of the boundary faces are the "
+        "surfaces; all of them need a name in $PhysicalNames.");
 
       prm.enter_subsection("Block");
       {
-        prm.declare_entry("Origin",
-                          "0, 0",
-                          Patterns::List(Patterns::Double(), 2, 3),
-                          "Lower left (front) corner of the box, one coordinate per "
-                          "space dimension.");
-        prm.declare_entry("Size",
-                          "1, 1",
-                          Patterns::List(Patterns::Double(1e-12), 2, 3),
-                          "Edge lengths of the box, one per space dimension. The body is "
-                          "called 'body', its surfaces left, right, bottom, top (and front "
-                          "= z min, back = z max in 3-D).");
-        prm.declare_entry("Subdivisions",
-                          "4, 4",
-                          Patterns::List(Patterns::Integer(1), 2, 3),
-                          "Number of elements along each edge of the box, one per space "
-                          "dimension.");
+        prm.declare_entry(
+          "Origin",
+          "0, 0",
+          Patterns::List(Patterns::Double(), 2, 3),
+          "Lower left (front) corner of the box, one coordinate per "
+          "space dimension.");
+        prm.declare_entry(
+          "Size",
+          "1, 1",
+          Patterns::List(Patterns::Double(1e-12), 2, 3),
+          "Edge lengths of the box, one per space dimension. The body is "
+          "called 'body', its surfaces left, right, bottom, top (and front "
+          "= z min, back = z max in 3-D).");
+        prm.declare_entry(
+          "Subdivisions",
+          "4, 4",
+          Patterns::List(Patterns::Integer(1), 2, 3),
+          "Number of elements along each edge of the box, one per space "
+          "dimension.");
       }
       prm.leave_subsection();
 
       prm.enter_subsection("Hertz");
       {
-        prm.declare_entry("Radius",
-                          "1",
+        prm.declare_entry(
+          "Radius",
+          "1",
+          Patterns::Double(1e-12),
+          "Radius of the half-cylinder (flat face on top, arc at the "
+          "bottom) pressed onto the block.");
+        prm.declare_entry(
+          "Block width",
+          "8",
+          Patterns::Double(1e-12),
+          "Width of the block [-width/2, width/2] x [0, height].");
+        prm.declare_entry("Block height",
+                          "4",
                           Patterns::Double(1e-12),
-                          "Radius of the half-cylinder (flat face on top, arc at the "
-                          "bottom) pressed onto the block.");
-        prm.declare_entry("Block width",
-                          "8",
-                          Patterns::Double(1e-12),
-                          "Width of the block [-width/2, width/2] x [0, height].");
-        prm.declare_entry("Block height", "4", Patterns::Double(1e-12), "Height of the block.");
-        prm.declare_entry("Gap",
-                          "0",
-                          Patterns::Double(0),
-                          "Initial vertical distance between the lowest point of the "
-                          "cylinder and the top of the block.");
+                          "Height of the block.");
+        prm.declare_entry(
+          "Gap",
+          "0",
+          Patterns::Double(0),
+          "Initial vertical distance between the lowest point of the "
+          "cylinder and the top of the block.");
       }
       prm.leave_subsection();
 
       prm.enter_subsection("Bar impact");
       {
-        prm.declare_entry("Bar length",
-                          "1",
+        prm.declare_entry(
+          "Bar length",
+          "1",
+          Patterns::Double(1e-12),
+          "Length L of the striker [-gap-L, -gap] x [0, height].");
+        prm.declare_entry("Bar height",
+                          "0.1",
                           Patterns::Double(1e-12),
-                          "Length L of the striker [-gap-L, -gap] x [0, height].");
-        prm.declare_entry("Bar height", "0.1", Patterns::Double(1e-12), "Height of the bars.");
-        prm.declare_entry("Gap",
-                          "0.01",
-                          Patterns::Double(0),
-                          "Initial distance between the striker and the target (at x = 0).");
-        prm.declare_entry("Target",
-                          "wall",
-                          Patterns::Selection("wall|bar"),
-                          "'wall': a short block [0, 0.2 L] x [0, height] (make it stiff and "
-                          "fix its right side); 'bar': a second bar [0, Target length] x "
-                          "[0, height].");
+                          "Height of the bars.");
+        prm.declare_entry(
+          "Gap",
+          "0.01",
+          Patterns::Double(0),
+          "Initial distance between the striker and the target (at x = 0).");
+        prm.declare_entry(
+          "Target",
+          "wall",
+          Patterns::Selection("wall|bar"),
+          "'wall': a short block [0, 0.2 L] x [0, height] (make it stiff and "
+          "fix its right side); 'bar': a second bar [0, Target length] x "
+          "[0, height].");
         prm.declare_entry("Target length",
                           "1",
                           Patterns::Double(1e-12),
                           "Length of the target bar (Target = bar).");
-        prm.declare_entry("Elements along bar",
-                          "40",
-                          Patterns::Integer(1),
-                          "Elements along the striker; the height and the target get "
-                          "elements of the same size.");
+        prm.declare_entry(
+          "Elements along bar",
+          "40",
+          Patterns::Integer(1),
+          "Elements along the striker; the height and the target get "
+          "elements of the same size.");
       }
       prm.leave_subsection();
     }
@@ -709,12 +767,14 @@ namespace ContactDynamics
         // The patterns allow 2 or 3 entries; the space dimension decides.
         const auto list = [&](const std::string &entry) {
           const std::string              value = prm.get(entry);
-          const std::vector<std::string> items = Utilities::split_string_list(value);
-          AssertThrow(scene_name != "block" || items.size() == dim,
-                      ExcMessage("The parameter Scene/Block/" + entry + " = '" + value +
-                                 "' has " + std::to_string(items.size()) +
-                                 " entries, but the problem is " + std::to_string(dim) +
-                                 "-D: give exactly " + std::to_string(dim) + " values."));
+          const std::vector<std::string> items =
+            Utilities::split_string_list(value);
+          AssertThrow(
+            scene_name != "block" || items.size() == dim,
+            ExcMessage("The parameter Scene/Block/" + entry + " = '" + value +
+                       "' has " + std::to_string(items.size()) +
+                       " entries, but the problem is " + std::to_string(dim) +
+                       "-D: give exactly " + std::to_string(dim) + " values."));
           return items;
         };
         block_origin = Utilities::string_to_double(list("Origin"));
@@ -748,8 +808,8 @@ namespace ContactDynamics
     prm.leave_subsection();
 
     AssertThrow(dim == 2 || scene_name == "block" || scene_name == "gmsh",
-                ExcMessage("The parameter Scene/Scene = '" + scene_name + "': scene '" +
-                           scene_name +
+                ExcMessage("The parameter Scene/Scene = '" + scene_name +
+                           "': scene '" + scene_name +
                            "' is 2-D only; in 3-D use 'block' or 'gmsh'."));
 
     // Report a missing or unnamed mesh file now rather than at mesh time.
@@ -780,21 +840,41 @@ namespace ContactDynamics
 
     if (scene_name == "bouncing block")
       return make_layout({"block", "substrate"},
-                         {"block_bottom", "block_top", "block_left", "block_right",
-                          "substrate_top", "substrate_bottom", "substrate_left",
+                         {"block_bottom",
+                          "block_top",
+                          "block_left",
+                          "block_right",
+                          "substrate_top",
+                          "substrate_bottom",
+                          "substrate_left",
                           "substrate_right"});
     else if (scene_name == "ironing")
       return make_layout({"tool", "substrate"},
-                         {"tool_arc", "tool_sides", "tool_top", "substrate_top",
-                          "substrate_bottom", "substrate_left", "substrate_right"});
+                         {"tool_arc",
+                          "tool_sides",
+                          "tool_top",
+                          "substrate_top",
+                          "substrate_bottom",
+                          "substrate_left",
+                          "substrate_right"});
     else if (scene_name == "patch test")
       return make_layout({"upper", "lower"},
-                         {"upper_top", "upper_bottom", "upper_left", "upper_right",
-                          "lower_top", "lower_bottom", "lower_left", "lower_right"});
+                         {"upper_top",
+                          "upper_bottom",
+                          "upper_left",
+                          "upper_right",
+                          "lower_top",
+                          "lower_bottom",
+                          "lower_left",
+                          "lower_right"});
     else if (scene_name == "hertz")
       return make_layout({"cylinder", "block"},
-                         {"cylinder_arc", "cylinder_top", "block_top", "block_bottom",
-                          "block_left", "block_right"});
+                         {"cylinder_arc",
+                          "cylinder_top",
+                          "block_top",
+                          "block_bottom",
+                          "block_left",
+                          "block_right"});
     else if (scene_name == "bar impact")
       {
         std::vector<std::string> surfaces;
@@ -821,8 +901,10 @@ namespace ContactDynamics
   void
   Scene<dim>::create_triangulation(Triangulation<dim> &triangulation) const
   {
-    AssertThrow(triangulation.n_cells() == 0,
-                ExcMessage("Scene::create_triangulation() needs an empty triangulation."));
+    AssertThrow(
+      triangulation.n_cells() == 0,
+      ExcMessage(
+        "Scene::create_triangulation() needs an empty triangulation."));
     const SceneLayout layout = this->layout(); // also rejects 2-D scenes in 3-D
     const double      f      = refinement_factor;
 
@@ -872,12 +954,13 @@ namespace ContactDynamics
               std::ostringstream reason;
               e.print_info(reason);
               AssertThrow(false,
-                          ExcMessage(mesh_file_error_prefix(mesh_file) +
-                                     "could not be read by GridIn::read_msh():\n" +
-                                     reason.str() +
-                                     "(A common cause: a tagged line between two bodies "
-                                     "that share nodes. Mesh touching bodies with their "
-                                     "own nodes and faces.)"));
+                          ExcMessage(
+                            mesh_file_error_prefix(mesh_file) +
+                            "could not be read by GridIn::read_msh():\n" +
+                            reason.str() +
+                            "(A common cause: a tagged line between two bodies "
+                            "that share nodes. Mesh touching bodies with their "
+                            "own nodes and faces.)"));
             }
         }
 
@@ -887,7 +970,8 @@ namespace ContactDynamics
 
         // Boundary faces of the file mesh, keyed by their sorted vertices.
         std::map<std::vector<unsigned int>, types::boundary_id> face_tag;
-        const auto face_key = [](const auto &face, const std::vector<unsigned int> &old_index) {
+        const auto face_key = [](const auto                      &face,
+                                 const std::vector<unsigned int> &old_index) {
           std::vector<unsigned int> key;
           for (const unsigned int v : face->vertex_indices())
             key.push_back(old_index.empty() ? face->vertex_index(v) :
@@ -902,24 +986,26 @@ namespace ContactDynamics
 
         // Copy the vertices once per body, so that bodies meshed with
         // common nodes still get separate vertices.
-        std::vector<Point<dim>>                                  vertices;
-        std::vector<unsigned int>                                old_index;
+        std::vector<Point<dim>>                                       vertices;
+        std::vector<unsigned int>                                     old_index;
         std::map<std::pair<unsigned int, unsigned int>, unsigned int> new_index;
-        std::vector<CellData<dim>>                               cells;
+        std::vector<CellData<dim>>                                    cells;
         for (const auto &cell : file_mesh.active_cell_iterators())
           {
             const auto body = body_of_tag.find(cell->material_id());
-            AssertThrow(body != body_of_tag.end(),
-                        ExcMessage(mesh_file_error_prefix(mesh_file) +
-                                   "has cells with the physical tag " +
-                                   std::to_string(cell->material_id()) +
-                                   " that has no name in $PhysicalNames; every cell must "
-                                   "belong to a named body."));
+            AssertThrow(
+              body != body_of_tag.end(),
+              ExcMessage(mesh_file_error_prefix(mesh_file) +
+                         "has cells with the physical tag " +
+                         std::to_string(cell->material_id()) +
+                         " that has no name in $PhysicalNames; every cell must "
+                         "belong to a named body."));
             CellData<dim> data(cell->n_vertices());
             for (const unsigned int v : cell->vertex_indices())
               {
-                const auto key = std::make_pair(body->second, cell->vertex_index(v));
-                auto       it  = new_index.find(key);
+                const auto key =
+                  std::make_pair(body->second, cell->vertex_index(v));
+                auto it = new_index.find(key);
                 if (it == new_index.end())
                   {
                     it = new_index.emplace(key, vertices.size()).first;
@@ -940,21 +1026,22 @@ namespace ContactDynamics
           for (const auto &face : cell->face_iterators())
             if (face->at_boundary())
               {
-                const auto tag     = face_tag.find(face_key(face, old_index));
-                const auto surface = (tag == face_tag.end() ?
-                                        surface_of_tag.end() :
-                                        surface_of_tag.find(tag->second));
+                const auto tag = face_tag.find(face_key(face, old_index));
+                const auto surface =
+                  (tag == face_tag.end() ? surface_of_tag.end() :
+                                           surface_of_tag.find(tag->second));
                 std::ostringstream where;
                 where << face->center();
-                AssertThrow(surface != surface_of_tag.end(),
-                            ExcMessage(mesh_file_error_prefix(mesh_file) +
-                                       "has a boundary face at (" + where.str() +
-                                       ") of the body '" +
-                                       layout.body_names[cell->material_id()] +
-                                       "' that is in no named physical group of dimension " +
-                                       std::to_string(dim - 1) +
-                                       ". Every boundary face must belong to a named surface "
-                                       "(bodies that touch need their own faces there)."));
+                AssertThrow(
+                  surface != surface_of_tag.end(),
+                  ExcMessage(
+                    mesh_file_error_prefix(mesh_file) +
+                    "has a boundary face at (" + where.str() +
+                    ") of the body '" + layout.body_names[cell->material_id()] +
+                    "' that is in no named physical group of dimension " +
+                    std::to_string(dim - 1) +
+                    ". Every boundary face must belong to a named surface "
+                    "(bodies that touch need their own faces there)."));
                 face->set_boundary_id(surface->second);
               }
         return;
@@ -966,68 +1053,105 @@ namespace ContactDynamics
         std::vector<BodyMesh<2>> bodies;
         if (scene_name == "bouncing block")
           {
-            bodies.push_back(rectangle_body(Point<2>(-2, 0), Point<2>(-1, 1),
-                                            scaled(10, f), scaled(10, f), "block_"));
-            bodies.push_back(rectangle_body(Point<2>(-2.5, -1), Point<2>(2.5, 0),
-                                            scaled(49, f), scaled(10, f), "substrate_"));
+            bodies.push_back(rectangle_body(Point<2>(-2, 0),
+                                            Point<2>(-1, 1),
+                                            scaled(10, f),
+                                            scaled(10, f),
+                                            "block_"));
+            bodies.push_back(rectangle_body(Point<2>(-2.5, -1),
+                                            Point<2>(2.5, 0),
+                                            scaled(49, f),
+                                            scaled(10, f),
+                                            "substrate_"));
           }
         else if (scene_name == "ironing")
           {
-            bodies.push_back(half_disc_body(Point<2>(1.2, 5.02), 1.0, scaled(16, f),
-                                            scaled(12, f), 1.0, scaled(16, f),
-                                            {"tool_arc", "", "tool_sides", "tool_top"}));
+            bodies.push_back(
+              half_disc_body(Point<2>(1.2, 5.02),
+                             1.0,
+                             scaled(16, f),
+                             scaled(12, f),
+                             1.0,
+                             scaled(16, f),
+                             {"tool_arc", "", "tool_sides", "tool_top"}));
             // 200 elements along the top; vertically a geometric progression
             // from the top element length down to coarser cells.
             const unsigned int nx = scaled(200, f);
-            bodies.push_back(rectangle_body(Point<2>(0, 0), Point<2>(12, 4),
-                                            uniform_steps(12, nx),
-                                            reversed(geometric_steps(4, 12.0 / nx,
-                                                                     scaled(30, f))),
-                                            "substrate_"));
+            bodies.push_back(rectangle_body(
+              Point<2>(0, 0),
+              Point<2>(12, 4),
+              uniform_steps(12, nx),
+              reversed(geometric_steps(4, 12.0 / nx, scaled(30, f))),
+              "substrate_"));
           }
         else if (scene_name == "patch test")
           {
-            bodies.push_back(rectangle_body(Point<2>(0, 0.5), Point<2>(1, 1),
-                                            scaled(7, f), scaled(4, f), "upper_"));
-            bodies.push_back(rectangle_body(Point<2>(0, 0), Point<2>(1, 0.5),
-                                            scaled(5, f), scaled(3, f), "lower_"));
+            bodies.push_back(rectangle_body(Point<2>(0, 0.5),
+                                            Point<2>(1, 1),
+                                            scaled(7, f),
+                                            scaled(4, f),
+                                            "upper_"));
+            bodies.push_back(rectangle_body(Point<2>(0, 0),
+                                            Point<2>(1, 0.5),
+                                            scaled(5, f),
+                                            scaled(3, f),
+                                            "lower_"));
           }
         else if (scene_name == "hertz")
           {
-            const double R = hertz_radius, w = hertz_block_width, h = hertz_block_height;
-            bodies.push_back(half_disc_body(Point<2>(0, h + hertz_gap + R), R,
-                                            scaled(32, f), scaled(20, f), 0, 0,
-                                            {"cylinder_arc", "cylinder_top", "", ""}));
+            const double R = hertz_radius, w = hertz_block_width,
+                         h = hertz_block_height;
+            bodies.push_back(
+              half_disc_body(Point<2>(0, h + hertz_gap + R),
+                             R,
+                             scaled(32, f),
+                             scaled(20, f),
+                             0,
+                             0,
+                             {"cylinder_arc", "cylinder_top", "", ""}));
 
             // Block: uniform cells of size R/40 within a distance R of the
             // top centre, geometrically growing (ratio about 1.1) outside.
-            const double size = R / scaled(40, f);
-            const auto graded = [&](const double fine_length, const double total) {
+            const double size   = R / scaled(40, f);
+            const auto   graded = [&](const double fine_length,
+                                    const double total) {
               // Steps from the contact point outwards.
               const double fine = std::min(fine_length, total);
               if (total - fine <= 2 * R / 40)
                 return uniform_steps(total, scaled(total / (R / 40), f));
-              const unsigned int n_fine = std::max(1u, (unsigned int)std::round(fine / size));
+              const unsigned int n_fine =
+                std::max(1u, (unsigned int)std::round(fine / size));
               const unsigned int n_grow =
                 scaled(n_growing_steps(total - fine, R / 40, 1.1), f);
               return concatenate(uniform_steps(fine, n_fine),
-                                 geometric_steps(total - fine, fine / n_fine, n_grow));
+                                 geometric_steps(total - fine,
+                                                 fine / n_fine,
+                                                 n_grow));
             };
             const std::vector<double> half_x = graded(R, w / 2);
-            bodies.push_back(rectangle_body(Point<2>(-w / 2, 0), Point<2>(w / 2, h),
-                                            concatenate(reversed(half_x), half_x),
-                                            reversed(graded(R, h)), "block_"));
+            bodies.push_back(
+              rectangle_body(Point<2>(-w / 2, 0),
+                             Point<2>(w / 2, h),
+                             concatenate(reversed(half_x), half_x),
+                             reversed(graded(R, h)),
+                             "block_"));
           }
         else if (scene_name == "bar impact")
           {
             const double       L = bar_length, h = bar_height, gap = bar_gap;
             const unsigned int nx = scaled(bar_elements, f);
             const unsigned int ny = scaled(nx * h / L, 1);
-            const double       target_length = (bar_target == "bar" ? bar_target_length : 0.2 * L);
-            bodies.push_back(rectangle_body(Point<2>(-gap - L, 0), Point<2>(-gap, h), nx, ny,
+            const double       target_length =
+              (bar_target == "bar" ? bar_target_length : 0.2 * L);
+            bodies.push_back(rectangle_body(Point<2>(-gap - L, 0),
+                                            Point<2>(-gap, h),
+                                            nx,
+                                            ny,
                                             "striker_"));
-            bodies.push_back(rectangle_body(Point<2>(0, 0), Point<2>(target_length, h),
-                                            scaled(nx * target_length / L, 1), ny,
+            bodies.push_back(rectangle_body(Point<2>(0, 0),
+                                            Point<2>(target_length, h),
+                                            scaled(nx * target_length / L, 1),
+                                            ny,
                                             "target_"));
           }
         else

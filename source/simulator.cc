@@ -102,9 +102,8 @@ namespace ContactDynamics
     output_parameters.parse_parameters(prm);
     prm.leave_subsection();
 
-    contact = create_contact_formulation<dim>(prm,
-                                              layout,
-                                              output_parameters.directory);
+    contact =
+      create_contact_formulation<dim>(prm, layout, output_parameters.directory);
     if (contact)
       fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(1),
                                            dim,
@@ -166,8 +165,11 @@ namespace ContactDynamics
         coupling(c, d) =
           (c < dim && d < dim) ? DoFTools::always : DoFTools::none;
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
-    DoFTools::make_sparsity_pattern(
-      dof_handler, coupling, dsp, increment_constraints, false);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    coupling,
+                                    dsp,
+                                    increment_constraints,
+                                    false);
     for (const auto i : locally_owned)
       dsp.add(i, i);
     if (contact)
@@ -182,20 +184,20 @@ namespace ContactDynamics
   {
     TimerOutput::Scope t(timer, "initial conditions");
     const unsigned int n_components = fe->n_components();
-    std::vector<std::unique_ptr<FunctionParser<dim>>> functions;
+    std::vector<std::unique_ptr<FunctionParser<dim>>>   functions;
     std::map<types::material_id, const Function<dim> *> u_map, v_map;
     for (unsigned int b = 0; b < bodies.size(); ++b)
       for (const bool displacement : {true, false})
         {
           const std::string parameter =
             BodyParameters::subsection_name(bodies[b].name) +
-            (displacement ? "/Initial displacement" :
-                            "/Initial velocity");
-          auto expressions = split_vector_expression(
-            displacement ? bodies[b].initial_displacement :
-                           bodies[b].initial_velocity,
-            dim,
-            parameter);
+            (displacement ? "/Initial displacement" : "/Initial velocity");
+          auto expressions =
+            split_vector_expression(displacement ?
+                                      bodies[b].initial_displacement :
+                                      bodies[b].initial_velocity,
+                                    dim,
+                                    parameter);
           expressions.resize(n_components, "0");
           auto f = std::make_unique<FunctionParser<dim>>(n_components);
           try
@@ -228,7 +230,11 @@ namespace ContactDynamics
     // by central differences keeps the Newmark update of those dofs
     // consistent from the first step on.
     std::map<types::global_dof_index, double> v_dirichlet, a_dirichlet;
-    dirichlet.rates(dof_handler, 0., 1e-4 * time_step, v_dirichlet, a_dirichlet);
+    dirichlet.rates(dof_handler,
+                    0.,
+                    1e-4 * time_step,
+                    v_dirichlet,
+                    a_dirichlet);
     for (const auto &p : dirichlet.values(dof_handler, 0.))
       if (locally_owned.is_element(p.first))
         u(p.first) = p.second;
@@ -259,7 +265,11 @@ namespace ContactDynamics
         MatrixType mass;
         mass.reinit(jacobian);
         mechanics->assemble_initial_acceleration_system(
-          u, v, acceleration_constraints, mass, residual);
+          u,
+          v,
+          acceleration_constraints,
+          mass,
+          residual);
         SolverControl                  control(1, 0, false, false);
         TrilinosWrappers::SolverDirect solver(control);
         solver.solve(mass, a, residual);
@@ -289,10 +299,11 @@ namespace ContactDynamics
                 ExcMessage("The initial acceleration is not finite: check "
                            "that the Dirichlet expressions are smooth at "
                            "t = 0 and that every body is held or free."));
-    energies          = EnergyBalance();
-    energies.kinetic  = integrator.is_dynamic() ? mechanics->kinetic_energy(v) : 0.;
-    energies.elastic  = mechanics->elastic_energy(u);
-    energies.initial  = energies.kinetic + energies.elastic;
+    energies = EnergyBalance();
+    energies.kinetic =
+      integrator.is_dynamic() ? mechanics->kinetic_energy(v) : 0.;
+    energies.elastic = mechanics->elastic_energy(u);
+    energies.initial = energies.kinetic + energies.elastic;
   }
 
   template <int dim>
@@ -309,32 +320,34 @@ namespace ContactDynamics
     apply_initial_conditions();
 
     std::vector<std::string> columns{"step",
-                               "time",
-                               "dt",
-                               "newton_iterations",
-                               "cumulative_newton_iterations",
-                               "kinetic_energy",
-                               "elastic_energy",
-                               "damping_dissipation",
-                               "external_work",
-                               "energy_balance_error",
-                               "wall_time",
-                               "final_residual",
-                               "time_step_cuts"};
+                                     "time",
+                                     "dt",
+                                     "newton_iterations",
+                                     "cumulative_newton_iterations",
+                                     "kinetic_energy",
+                                     "elastic_energy",
+                                     "damping_dissipation",
+                                     "external_work",
+                                     "energy_balance_error",
+                                     "wall_time",
+                                     "final_residual",
+                                     "time_step_cuts"};
     if (contact)
       for (const auto &c : contact->statistics_columns())
         columns.push_back(c);
-    statistics = std::make_unique<StatisticsFile>(
-      output_parameters.directory + "/statistics.csv", columns);
-    solution_writer = std::make_unique<SolutionWriter<dim>>(
-      output_parameters.directory,
-      contact ? contact->extra_component_names() :
-                std::vector<std::string>());
+    statistics = std::make_unique<StatisticsFile>(output_parameters.directory +
+                                                    "/statistics.csv",
+                                                  columns);
+    solution_writer =
+      std::make_unique<SolutionWriter<dim>>(output_parameters.directory,
+                                            contact ?
+                                              contact->extra_component_names() :
+                                              std::vector<std::string>());
 
-    pcout << "Scene '" << scene.name() << "': "
-          << triangulation.n_active_cells() << " cells, "
-          << dof_handler.n_dofs() << " unknowns, " << bodies.size()
-          << " bod" << (bodies.size() == 1 ? "y" : "ies") << std::endl;
+    pcout << "Scene '" << scene.name()
+          << "': " << triangulation.n_active_cells() << " cells, "
+          << dof_handler.n_dofs() << " unknowns, " << bodies.size() << " bod"
+          << (bodies.size() == 1 ? "y" : "ies") << std::endl;
     output_step(0, 0., true);
   }
 
@@ -426,7 +439,7 @@ namespace ContactDynamics
   {
     if (dt != dt_current)
       structure_changed = true;
-    dt_current        = dt;
+    dt_current         = dt;
     const double t_new = time + dt;
 
     {
@@ -448,8 +461,12 @@ namespace ContactDynamics
     NewtonSolver::Result result;
     {
       TimerOutput::Scope t(timer, "Newton solve");
-      result = newton.solve(
-        *this, jacobian, residual, increment, structure_changed, pcout.get_stream());
+      result = newton.solve(*this,
+                            jacobian,
+                            residual,
+                            increment,
+                            structure_changed,
+                            pcout.get_stream());
     }
     std::string failure = result.failure;
 
@@ -511,20 +528,20 @@ namespace ContactDynamics
                               const double       final_residual,
                               const bool         force_vtu)
   {
-    TimerOutput::Scope t(timer, "output");
+    TimerOutput::Scope  t(timer, "output");
     std::vector<double> row{double(step),
-                           time,
-                           step == 0 ? 0. : dt_current,
-                           double(newton_iterations),
-                           double(cumulative_newton_iterations),
-                           energies.kinetic,
-                           energies.elastic,
-                           energies.dissipated,
-                           energies.external,
-                           energies.error(),
-                           wall_timer.wall_time(),
-                           final_residual,
-                           double(time_step_cuts)};
+                            time,
+                            step == 0 ? 0. : dt_current,
+                            double(newton_iterations),
+                            double(cumulative_newton_iterations),
+                            energies.kinetic,
+                            energies.elastic,
+                            energies.dissipated,
+                            energies.external,
+                            energies.error(),
+                            wall_timer.wall_time(),
+                            final_residual,
+                            double(time_step_cuts)};
     if (contact)
       for (const double x : contact->statistics())
         row.push_back(x);
@@ -538,8 +555,8 @@ namespace ContactDynamics
             << std::setprecision(6) << time << "  dt = " << std::setw(9)
             << dt_current << "  Newton " << std::setw(2) << newton_iterations
             << "  |R| = " << std::scientific << std::setprecision(2)
-            << final_residual << "  E_kin+E_el = "
-            << energies.kinetic + energies.elastic
+            << final_residual
+            << "  E_kin+E_el = " << energies.kinetic + energies.elastic
             << "  balance error = " << energies.error() << std::defaultfloat
             << std::endl;
   }
@@ -607,17 +624,16 @@ namespace ContactDynamics
             ++time_step_cuts;
             good_since_cut = 0;
             dt             = dt_try / 2;
-            AssertThrow(dt >= minimum_time_step,
-                        ExcMessage(
-                          "The time step would have to be cut to " +
-                          std::to_string(dt) + " at t = " +
-                          std::to_string(time) +
-                          ", below Time integration/Minimum time step = " +
-                          std::to_string(minimum_time_step) +
-                          ". The run stops here; statistics.csv and the VTU "
-                          "files in '" +
-                          output_parameters.directory +
-                          "' hold every completed step."));
+            AssertThrow(
+              dt >= minimum_time_step,
+              ExcMessage(
+                "The time step would have to be cut to " + std::to_string(dt) +
+                " at t = " + std::to_string(time) +
+                ", below Time integration/Minimum time step = " +
+                std::to_string(minimum_time_step) +
+                ". The run stops here; statistics.csv and the VTU "
+                "files in '" +
+                output_parameters.directory + "' hold every completed step."));
             pcout << "  cutting the time step to " << dt << std::endl;
           }
       }

@@ -39,13 +39,13 @@ namespace ContactDynamics
         cell->get_dof_indices(dofs);
       }
 
-      QGauss<dim>                      quadrature;
-      FEValues<dim>                    fe_values;
-      const FEValuesExtractors::Vector displacement;
+      QGauss<dim>                          quadrature;
+      FEValues<dim>                        fe_values;
+      const FEValuesExtractors::Vector     displacement;
       std::vector<types::global_dof_index> dofs;
-      std::vector<unsigned int>        u_local;
-      std::vector<Tensor<2, dim>>      grad_u, grad_v;
-      std::vector<Tensor<1, dim>>      v, a;
+      std::vector<unsigned int>            u_local;
+      std::vector<Tensor<2, dim>>          grad_u, grad_v;
+      std::vector<Tensor<1, dim>>          v, a;
     };
 
     template <int dim>
@@ -96,11 +96,11 @@ namespace ContactDynamics
     if (with_jacobian)
       jacobian = 0;
 
-    CellFields<dim>    f(dof_handler);
-    const bool         dynamic = (c_a > 0);
-    const unsigned int n       = f.dofs.size();
-    FullMatrix<double> cell_matrix(n, n);
-    Vector<double>     cell_rhs(n);
+    CellFields<dim>             f(dof_handler);
+    const bool                  dynamic = (c_a > 0);
+    const unsigned int          n       = f.dofs.size();
+    FullMatrix<double>          cell_matrix(n, n);
+    Vector<double>              cell_rhs(n);
     std::vector<Tensor<2, dim>> grad_phi(n);
     std::vector<Tensor<1, dim>> phi(n);
     std::vector<Tensor<2, dim>> tangent_grad_phi(n);
@@ -112,8 +112,8 @@ namespace ContactDynamics
           const Material<dim>  &material = *materials[cell->material_id()];
           const BodyParameters &body     = bodies[cell->material_id()];
           const double          rho      = body.material.density;
-          const double alpha = body.material.rayleigh_mass_coefficient;
-          const double beta  = body.material.rayleigh_stiffness_coefficient;
+          const double          alpha = body.material.rayleigh_mass_coefficient;
+          const double   beta = body.material.rayleigh_stiffness_coefficient;
           Tensor<1, dim> body_force;
           for (unsigned int d = 0; d < dim; ++d)
             body_force[d] = body.body_force[d];
@@ -146,12 +146,11 @@ namespace ContactDynamics
               const double JxW = f.fe_values.JxW(q);
               for (const unsigned int i : f.u_local)
                 {
-                  phi[i] = f.fe_values[f.displacement].value(i, q);
-                  grad_phi[i] =
-                    f.fe_values[f.displacement].gradient(i, q);
-                  cell_rhs(i) += (inertia * phi[i] +
-                                  scalar_product(stress, grad_phi[i])) *
-                                 JxW;
+                  phi[i]      = f.fe_values[f.displacement].value(i, q);
+                  grad_phi[i] = f.fe_values[f.displacement].gradient(i, q);
+                  cell_rhs(i) +=
+                    (inertia * phi[i] + scalar_product(stress, grad_phi[i])) *
+                    JxW;
                 }
               if (!with_jacobian)
                 continue;
@@ -173,8 +172,11 @@ namespace ContactDynamics
 
           residual_full.add(f.dofs, cell_rhs);
           if (with_jacobian)
-            constraints.distribute_local_to_global(
-              cell_matrix, cell_rhs, f.dofs, jacobian, residual);
+            constraints.distribute_local_to_global(cell_matrix,
+                                                   cell_rhs,
+                                                   f.dofs,
+                                                   jacobian,
+                                                   residual);
           else
             constraints.distribute_local_to_global(cell_rhs, f.dofs, residual);
         }
@@ -222,15 +224,18 @@ namespace ContactDynamics
           for (unsigned int q = 0; q < f.quadrature.size(); ++q)
             for (const unsigned int i : f.u_local)
               for (const unsigned int j : f.u_local)
-                cell_matrix(i, j) +=
-                  rho *
-                  (f.fe_values[f.displacement].value(i, q) *
-                   f.fe_values[f.displacement].value(j, q)) *
-                  f.fe_values.JxW(q);
+                cell_matrix(i, j) += rho *
+                                     (f.fe_values[f.displacement].value(i, q) *
+                                      f.fe_values[f.displacement].value(j, q)) *
+                                     f.fe_values.JxW(q);
           for (unsigned int i = 0; i < n; ++i)
             cell_rhs(i) = 0;
-          constraints.distribute_local_to_global(
-            cell_matrix, cell_rhs, f.dofs, mass_matrix, rhs, true);
+          constraints.distribute_local_to_global(cell_matrix,
+                                                 cell_rhs,
+                                                 f.dofs,
+                                                 mass_matrix,
+                                                 rhs,
+                                                 true);
         }
     mass_matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);
@@ -337,9 +342,10 @@ namespace ContactDynamics
           for (unsigned int q = 0; q < f.quadrature.size(); ++q)
             product +=
               (alpha * m.density * (f.v[q] * w[q]) +
-               beta * scalar_product(symmetrize(f.grad_v[q]),
-                                     double_contract<2, 0, 3, 1>(
-                                       C, symmetrize(grad_w[q])))) *
+               beta *
+                 scalar_product(
+                   symmetrize(f.grad_v[q]),
+                   double_contract<2, 0, 3, 1>(C, symmetrize(grad_w[q])))) *
               f.fe_values.JxW(q);
         }
     return Utilities::MPI::sum(product, v1.get_mpi_communicator());

@@ -162,8 +162,8 @@ namespace ContactDynamics
       }
     if (!directory.empty())
       {
-        history = std::make_unique<std::ofstream>(directory +
-                                                  "/contact_history.csv");
+        history =
+          std::make_unique<std::ofstream>(directory + "/contact_history.csv");
         *history << "time";
         for (const auto &m : monitored)
           {
@@ -173,8 +173,8 @@ namespace ContactDynamics
           }
         *history << std::endl;
       }
-    have_state         = false;
-    contact_work       = 0;
+    have_state   = false;
+    contact_work = 0;
   }
 
   template <int dim>
@@ -191,7 +191,7 @@ namespace ContactDynamics
   std::vector<std::vector<unsigned int>>
   SurfaceContact<dim>::compute_candidates(const PairData   &pair,
                                           const VectorType &u,
-                                          const double margin_factor) const
+                                          const double      margin_factor) const
   {
     std::vector<BoundingBox<dim>> secondary, primary;
     for (unsigned int p = 0; p < n_patches(pair); ++p)
@@ -272,10 +272,10 @@ namespace ContactDynamics
     const double                                                   value,
     const std::vector<std::pair<types::global_dof_index, double>> &derivatives,
     const AffineConstraints<double>                               &constraints,
-    const bool                                                     with_jacobian,
-    VectorType                                                    &residual,
-    MatrixType                                                    &jacobian,
-    VectorType                                                    &residual_full)
+    const bool  with_jacobian,
+    VectorType &residual,
+    MatrixType &jacobian,
+    VectorType &residual_full)
   {
     residual_full(row) += value;
     force(row) += value;
@@ -306,16 +306,16 @@ namespace ContactDynamics
     //   inactive:           lambda_t = 0
     //   stick (|s| < mu xi): v = 0 (written c_t v = 0)
     //   slip:               lambda_t - mu xi sign(s) = 0
-    NodeState                    &node  = pair.nodes[j];
-    const types::global_dof_index row   = pair.secondary.dofs[j][dim + 1];
-    const double                  scale = pair.secondary.reference_weight[j];
-    const double                  mu    = pair.friction_coefficient;
+    NodeState                    &node     = pair.nodes[j];
+    const types::global_dof_index row      = pair.secondary.dofs[j][dim + 1];
+    const double                  scale    = pair.secondary.reference_weight[j];
+    const double                  mu       = pair.friction_coefficient;
     const double                  lambda_t = (*last_u)(row);
 
     // normalized slip rate
     LinearizedValue v;
-    const double w = (complementarity.normalize_c_n && node.projected) ?
-                       node.weight : 1.;
+    const double    w =
+      (complementarity.normalize_c_n && node.projected) ? node.weight : 1.;
     v.value = pair.slip_rate[j].value / w;
     for (const auto &d : pair.slip_rate[j].derivatives)
       v.derivatives[d.first] += d.second / w;
@@ -345,7 +345,9 @@ namespace ContactDynamics
         if (with_jacobian)
           for (const auto &d : v.derivatives)
             if (!constraints.is_constrained(d.first))
-              jacobian.add(row, d.first, scale * complementarity.c_t * d.second);
+              jacobian.add(row,
+                           d.first,
+                           scale * complementarity.c_t * d.second);
         return;
       }
     ++n_slip;
@@ -383,8 +385,8 @@ namespace ContactDynamics
     force          = 0;
     friction_force = 0;
     n_stick = n_slip = 0;
-    last_u         = &state.u;
-    n_active       = 0;
+    last_u           = &state.u;
+    n_active         = 0;
     total_force[0] = total_force[1] = 0;
 
     for (auto &pair : pairs)
@@ -395,8 +397,14 @@ namespace ContactDynamics
         pair.gap_rate.assign(n_nodes, LinearizedValue());
         pair.slip_rate.assign(n_nodes, LinearizedValue());
         for (unsigned int p = 0; p < n_patches(pair); ++p)
-          assemble_patch(pair, p, state, constraints, with_jacobian, residual,
-                         jacobian, residual_full);
+          assemble_patch(pair,
+                         p,
+                         state,
+                         constraints,
+                         with_jacobian,
+                         residual,
+                         jacobian,
+                         residual_full);
 
         // the complementarity condition of every secondary node, scaled by
         // its reference weight so that its row has force units
@@ -419,9 +427,11 @@ namespace ContactDynamics
             bool            active = false;
             if (node.projected)
               {
-                const bool rate = node.persistent && state.dynamic;
-                const LinearizedValue &g = rate ? pair.gap_rate[j] : pair.gap[j];
-                const double factor = complementarity.c_n * (rate ? state.dt : 1.);
+                const bool             rate = node.persistent && state.dynamic;
+                const LinearizedValue &g =
+                  rate ? pair.gap_rate[j] : pair.gap[j];
+                const double factor =
+                  complementarity.c_n * (rate ? state.dt : 1.);
                 const bool   normalize = complementarity.normalize_c_n;
                 const double w         = normalize ? node.weight : 1.;
                 constraint.value       = factor * g.value / w;
@@ -453,8 +463,14 @@ namespace ContactDynamics
               }
 
             if (pair.friction_coefficient > 0)
-              assemble_friction(pair, j, active, lambda, constraint,
-                                constraints, with_jacobian, residual,
+              assemble_friction(pair,
+                                j,
+                                active,
+                                lambda,
+                                constraint,
+                                constraints,
+                                with_jacobian,
+                                residual,
                                 jacobian);
           }
         for (unsigned int j = 0; j < n_nodes; ++j)
@@ -481,17 +497,16 @@ namespace ContactDynamics
             dofs.insert(node_dofs[d]);
     double work = 0;
     for (const auto i : dofs)
-      work -= ((*last_u)(i) - old_u(i)) * 0.5 *
+      work -= ((*last_u)(i)-old_u(i)) * 0.5 *
               (force(i) + (have_state ? force_committed(i) : 0.));
     contact_work += work;
     if (friction)
       {
         double friction_work = 0;
         for (const auto i : dofs)
-          friction_work -=
-            ((*last_u)(i) - old_u(i)) * 0.5 *
-            (friction_force(i) +
-             (have_state ? friction_force_committed(i) : 0.));
+          friction_work -= ((*last_u)(i)-old_u(i)) * 0.5 *
+                           (friction_force(i) +
+                            (have_state ? friction_force_committed(i) : 0.));
         frictional_dissipation -= friction_work;
         friction_force_committed = friction_force;
       }
@@ -531,7 +546,8 @@ namespace ContactDynamics
                                      "contact_force_y",
                                      "contact_work"};
     if (friction)
-      for (const char *c : {"stick_nodes", "slip_nodes", "frictional_dissipation"})
+      for (const char *c :
+           {"stick_nodes", "slip_nodes", "frictional_dissipation"})
         columns.emplace_back(c);
     return columns;
   }

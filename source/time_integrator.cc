@@ -40,18 +40,18 @@ namespace ContactDynamics
   void
   TimeIntegrator::parse_parameters(ParameterHandler &prm)
   {
-    dynamic = (prm.get("Scheme") == "newmark");
-    beta_   = prm.get_double("Newmark beta");
-    gamma_  = prm.get_double("Newmark gamma");
+    dynamic             = (prm.get("Scheme") == "newmark");
+    beta_               = prm.get_double("Newmark beta");
+    gamma_              = prm.get_double("Newmark gamma");
     const std::string p = prm.get("Predictor");
     predictor = (p == "constant displacement" ? Predictor::displacement :
                  p == "constant velocity"     ? Predictor::velocity :
                                                 Predictor::acceleration);
     AssertThrow(!dynamic || 2 * beta_ >= gamma_ - 1e-12,
-                ExcMessage("Time integration/Newmark beta = " +
-                           std::to_string(beta_) + " with Newmark gamma = " +
-                           std::to_string(gamma_) +
-                           " is only conditionally stable; this implicit code "
-                           "requires 2 beta >= gamma >= 1/2."));
+                ExcMessage(
+                  "Time integration/Newmark beta = " + std::to_string(beta_) +
+                  " with Newmark gamma = " + std::to_string(gamma_) +
+                  " is only conditionally stable; this implicit code "
+                  "requires 2 beta >= gamma >= 1/2."));
   }
 } // namespace ContactDynamics

@@ -26,7 +26,7 @@ namespace
   Result
   run(const std::string &stabilization)
   {
-    const double dt = 0.0125;
+    const double     dt = 0.0125;
     ParameterHandler prm;
     read_test_parameters("bar.prm",
                          R"(
@@ -65,7 +65,8 @@ subsection Contact
   set Pairs = striker_right: target_left
   subsection Mortar
     set c_n = 10
-    set Stabilization = )" + stabilization +
+    set Stabilization = )" +
+                           stabilization +
                            R"(
   end
 end
@@ -78,8 +79,8 @@ end
     std::ostringstream            screen;
     ContactDynamics::Simulator<2> simulator(prm, screen);
     simulator.initialize();
-    const double initial  = simulator.energy().initial;
-    double       first    = -1, last = -1, impulse = 0;
+    const double initial = simulator.energy().initial;
+    double       first = -1, last = -1, impulse = 0;
     while (simulator.current_time() < 3 - 1e-9)
       {
         if (!simulator.advance(dt))
@@ -94,8 +95,8 @@ end
           }
       }
     // momentum / mass of the striker with row-sum (lumped) nodal masses
-    const auto        &dof_handler = simulator.get_dof_handler();
-    double             momentum = 0, mass = 0;
+    const auto &dof_handler = simulator.get_dof_handler();
+    double      momentum = 0, mass = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->material_id() == 0)
         for (unsigned int v = 0; v < 4; ++v)
@@ -117,18 +118,23 @@ int
 main()
 {
   initlog();
-  const double   v0 = 0.1, h = 0.1, dt = 0.0125;
-  const Result   stabilized = run("persistency");
-  const Result   plain      = run("none");
+  const double v0 = 0.1, h = 0.1, dt = 0.0125;
+  const Result stabilized = run("persistency");
+  const Result plain      = run("none");
   check_close("first contact at gap / v0", stabilized.first_contact, 0.1, dt);
   check_close("contact duration 2 L / c", stabilized.duration, 2., 2 * dt);
   check_close("mean contact force / (rho c v0 h)",
-              stabilized.mean_force / (v0 * h), 1., 0.03);
+              stabilized.mean_force / (v0 * h),
+              1.,
+              0.03);
   check_close("rebound velocity / v0", stabilized.rebound / v0, -1., 0.02);
   check_close("persistency: energy after / before - 1",
-              stabilized.energy_error, 0., 0.01);
+              stabilized.energy_error,
+              0.,
+              0.01);
   check_true("without persistency the energy error is 10 times larger",
-             std::abs(plain.energy_error) > 10 * std::abs(stabilized.energy_error));
+             std::abs(plain.energy_error) >
+               10 * std::abs(stabilized.energy_error));
   deallog << std::setprecision(2) << "energy error with persistency "
           << 100 * stabilized.energy_error << " %, without "
           << 100 * plain.energy_error << " %" << std::endl;

@@ -96,7 +96,7 @@ end
            const VectorType              &direction,
            const double                   dt)
   {
-    VectorType r_plus(trial), r_minus(trial), r(trial), jd(trial);
+    VectorType   r_plus(trial), r_minus(trial), r(trial), jd(trial);
     const double h = 1e-7;
     VectorType   shifted(trial);
     shifted.add(h, direction);
@@ -123,7 +123,8 @@ end
         const double       lambda_scale = 200)
   {
     ParameterHandler prm;
-    read_test_parameters("jacobian.prm", parameters(jacobian, scheme, u0, v0),
+    read_test_parameters("jacobian.prm",
+                         parameters(jacobian, scheme, u0, v0),
                          prm);
     std::ostringstream            screen;
     ContactDynamics::Simulator<2> simulator(prm, screen);
@@ -134,13 +135,14 @@ end
 
     std::mt19937                           rng(7);
     std::uniform_real_distribution<double> uniform(-1., 1.);
-    VectorType trial(simulator.displacement()), direction(trial);
+    VectorType  trial(simulator.displacement()), direction(trial);
     const auto &multipliers = simulator.get_contact()->multiplier_dofs();
     std::set<types::global_dof_index> lambda(multipliers.begin(),
                                              multipliers.end());
-    const auto tangential = DoFTools::extract_dofs(
-      simulator.get_dof_handler(),
-      ComponentMask(std::vector<bool>{false, false, false, true}));
+    const auto                        tangential =
+      DoFTools::extract_dofs(simulator.get_dof_handler(),
+                             ComponentMask(
+                               std::vector<bool>{false, false, false, true}));
     for (unsigned int i = 0; i < trial.size(); ++i)
       {
         if (lambda.count(i))
@@ -161,7 +163,7 @@ end
     // multipliers): their rows are identities
     simulator.get_constraints().set_zero(direction);
     const double error = fd_error(simulator, trial, direction, 0.01);
-    const auto *mortar =
+    const auto  *mortar =
       dynamic_cast<const ContactDynamics::SurfaceContact<2> *>(
         simulator.get_contact());
     unsigned int n_active = 0, n_persistent = 0, n_stick = 0;
@@ -176,8 +178,7 @@ end
     if (expect_match)
       check_close(name + ": |J d - FD| / |J d|", error, 0., 1e-6);
     else
-      check_true(name + ": differs from FD by more than 1e-3",
-                 error > 1e-3);
+      check_true(name + ": differs from FD by more than 1e-3", error > 1e-3);
   }
 } // namespace
 
@@ -185,8 +186,13 @@ void
 check_all(const std::string &prefix)
 {
   const std::string tilted = "0.002*x; -0.003 + 0.002*x";
-  check(prefix + "in contact, exact", "exact", "quasi-static", tilted, "0; 0",
-        0, true);
+  check(prefix + "in contact, exact",
+        "exact",
+        "quasi-static",
+        tilted,
+        "0; 0",
+        0,
+        true);
   check(prefix + "in contact, approximate",
         "approximate",
         "quasi-static",
@@ -217,11 +223,21 @@ check_friction(const std::string &prefix)
   const std::string tilted = "0.002*x; -0.003 + 0.002*x";
   friction                 = "0.3";
   tangential_scale         = 1; // |lambda_t| << mu lambda_n: stick
-  check(prefix + "friction, stick, exact", "exact", "quasi-static", tilted,
-        "0; 0", 0, true);
+  check(prefix + "friction, stick, exact",
+        "exact",
+        "quasi-static",
+        tilted,
+        "0; 0",
+        0,
+        true);
   tangential_scale = 500; // |lambda_t| > mu lambda_n: slip
-  check(prefix + "friction, slip, exact", "exact", "quasi-static", tilted,
-        "0; 0", 0, true);
+  check(prefix + "friction, slip, exact",
+        "exact",
+        "quasi-static",
+        tilted,
+        "0; 0",
+        0,
+        true);
   friction         = "0";
   tangential_scale = 0;
 }

@@ -83,22 +83,32 @@ end
             worst_gap = std::max(worst_gap, std::abs(node.normalized_gap()));
           }
       }
-    const auto stats = contact->statistics();
-    const auto top   = simulator.reaction_force("upper_top");
+    const auto stats  = contact->statistics();
+    const auto top    = simulator.reaction_force("upper_top");
     const auto bottom = simulator.reaction_force("lower_bottom");
     deallog << formulation << ": secondary nodes "
             << contact->node_states(0).size() << ", active " << n_active
             << std::endl;
     check_close(formulation + ": contact force on the upper block + reaction "
                               "at its top",
-                (stats[2] + top[1]) / exact, 0., 1e-9);
+                (stats[2] + top[1]) / exact,
+                0.,
+                1e-9);
     check_close(formulation + ": reactions at top and bottom cancel",
-                (top[1] + bottom[1]) / exact, 0., 1e-9);
+                (top[1] + bottom[1]) / exact,
+                0.,
+                1e-9);
     check_close(formulation + ": tangential contact force",
-                stats[1] / exact, 0., 1e-9);
+                stats[1] / exact,
+                0.,
+                1e-9);
     check_close(formulation + ": gap at active nodes / delta",
-                worst_gap / 1e-3, 0., 1e-9);
-    check_close(formulation + ": total load / (E delta)", -top[1] / exact, 1.,
+                worst_gap / 1e-3,
+                0.,
+                1e-9);
+    check_close(formulation + ": total load / (E delta)",
+                -top[1] / exact,
+                1.,
                 formulation == "mortar" ? 1e-9 : 0.05);
     return worst / exact;
   }
@@ -109,8 +119,7 @@ main()
 {
   initlog();
   const double mortar = run("mortar");
-  check_close("mortar: max |pressure - E delta| / (E delta)", mortar, 0.,
-              1e-8);
+  check_close("mortar: max |pressure - E delta| / (E delta)", mortar, 0., 1e-8);
   // informational (numdiff compares values below 1e-6 as equal)
   deallog << "mortar: measured relative pressure error: " << mortar
           << std::endl;

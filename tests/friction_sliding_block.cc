@@ -81,9 +81,9 @@ end
     const auto  *contact =
       dynamic_cast<const ContactDynamics::SurfaceContact<2> *>(
         simulator.get_contact());
-    bool         stuck_phase = false, slid_phase = false;
-    double       worst_stick_slip = 0, worst_slip_ratio = 0;
-    double       worst_force_ratio = 0, onset = -1;
+    bool   stuck_phase = false, slid_phase = false;
+    double worst_stick_slip = 0, worst_slip_ratio = 0;
+    double worst_force_ratio = 0, onset = -1;
     while (simulator.current_time() < 3 - 1e-9)
       {
         if (!simulator.advance(0.05))
@@ -95,8 +95,7 @@ end
           {
             stuck_phase = true;
             if (stats[5] != 0)
-              check_true(formulation + ": no slip node below mu N / 2",
-                         false);
+              check_true(formulation + ": no slip node below mu N / 2", false);
           }
         for (const auto &node : contact->node_states(0))
           if (node.stick)
@@ -109,30 +108,38 @@ end
               std::max(worst_force_ratio, std::abs(T / (mu * N) - 1));
             for (const auto &node : contact->node_states(0))
               if (node.active)
-                worst_slip_ratio =
-                  std::max(worst_slip_ratio,
-                           std::abs(std::abs(node.tangential) /
-                                      (mu * node.pressure) -
-                                    1));
+                worst_slip_ratio = std::max(worst_slip_ratio,
+                                            std::abs(std::abs(node.tangential) /
+                                                       (mu * node.pressure) -
+                                                     1));
           }
         if (stats[5] > 0 && onset < 0)
           onset = T / (mu * N);
       }
-    deallog << formulation << ": first slip node at T / (mu N) = "
-            << std::setprecision(2) << onset << std::endl;
+    deallog << formulation
+            << ": first slip node at T / (mu N) = " << std::setprecision(2)
+            << onset << std::endl;
     check_true(formulation + ": a stick phase and a slip phase",
                stuck_phase && slid_phase);
     check_close(formulation + ": slip increment of sticking nodes",
-                worst_stick_slip, 0., 1e-12);
+                worst_stick_slip,
+                0.,
+                1e-12);
     check_close(formulation + ": |lambda_t| / (mu lambda_n) - 1 at slipping "
                               "nodes",
-                worst_slip_ratio, 0., 1e-8);
+                worst_slip_ratio,
+                0.,
+                1e-8);
     check_close(formulation + ": T / (mu N) - 1 while all nodes slip",
-                worst_force_ratio, 0., 5e-3);
+                worst_force_ratio,
+                0.,
+                5e-3);
     const auto &e = simulator.energy();
     check_true(formulation + ": friction dissipates", e.frictional > 0);
     check_close(formulation + ": energy balance error / dissipation",
-                e.error() / e.frictional, 0., 1e-3);
+                e.error() / e.frictional,
+                0.,
+                1e-3);
   }
 } // namespace
 
@@ -166,7 +173,8 @@ subsection Time integration
   set End time = 0.1
 end
 subsection Contact
-  set Formulation = )" + formulation + R"(
+  set Formulation = )" + formulation +
+                         R"(
   set Pairs = upper_bottom: lower_top
   set Friction coefficients = 0.3
   subsection Mortar
@@ -204,9 +212,13 @@ end
   const auto &e = simulator.energy();
   check_true(formulation + " braking: friction dissipates", e.frictional > 0);
   check_close(formulation + " braking: energy balance error / dissipation",
-              e.error() / e.frictional, 0., 1e-3);
+              e.error() / e.frictional,
+              0.,
+              1e-3);
   check_close(formulation + " braking: deceleration / (mu g)",
-              (0.5 - momentum / mass) / 0.1 / 3., 1., 0.05);
+              (0.5 - momentum / mass) / 0.1 / 3.,
+              1.,
+              0.05);
 }
 
 int

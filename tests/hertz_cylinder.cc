@@ -33,7 +33,8 @@ namespace
                          R"(
 subsection Scene
   set Scene = hertz
-  set Refinement factor = )" + std::to_string(factor) +
+  set Refinement factor = )" +
+                           std::to_string(factor) +
                            R"(
 end
 subsection Body cylinder
@@ -56,7 +57,8 @@ subsection Nonlinear solver
   set Absolute tolerance = 1e-9
 end
 subsection Contact
-  set Formulation = )" + formulation + R"(
+  set Formulation = )" + formulation +
+                           R"(
   set Pairs = cylinder_arc: block_top
   subsection Mortar
     set c_n = 1e4
@@ -107,15 +109,15 @@ end
     double       num = 0, den = 0;
     for (unsigned int j = 0; j < nodes.size(); ++j)
       {
-        const double r = (surface.position(j, simulator.displacement())[0] -
-                          centre) / a;
+        const double r =
+          (surface.position(j, simulator.displacement())[0] - centre) / a;
         const double exact = p0 * std::sqrt(std::max(0., 1 - r * r));
         const double w     = weight(j);
         num += w * std::pow(nodes[j].pressure - exact, 2);
         den += w * exact * exact;
       }
-    deallog << std::setprecision(3) << formulation << ", factor " << factor << ": P = " << P << ", a = " << a
-            << ", p0 = " << p0 << std::endl;
+    deallog << std::setprecision(3) << formulation << ", factor " << factor
+            << ": P = " << P << ", a = " << a << ", p0 = " << p0 << std::endl;
     check_close(formulation + ", factor " + std::to_string(factor) +
                   ": sum of nodal forces / P",
                 m0 / P,
@@ -132,15 +134,21 @@ main()
   initlog();
   const Errors coarse = run(0.5);
   const Errors fine   = run(1);
-  for (const auto &e : {std::make_pair("coarse", coarse),
-                        std::make_pair("fine", fine)})
+  for (const auto &e :
+       {std::make_pair("coarse", coarse), std::make_pair("fine", fine)})
     {
       check_close(std::string(e.first) + ": half-width error within 5 %",
-                  e.second.half_width, 0., 0.05);
+                  e.second.half_width,
+                  0.,
+                  0.05);
       check_close(std::string(e.first) + ": peak pressure error within 3 %",
-                  e.second.peak, 0., 0.03);
+                  e.second.peak,
+                  0.,
+                  0.03);
       check_close(std::string(e.first) + ": profile L2 error within 6 %",
-                  e.second.profile, 0., 0.06);
+                  e.second.profile,
+                  0.,
+                  0.06);
     }
   check_true("half-width error decreases with refinement",
              std::abs(fine.half_width) < std::abs(coarse.half_width));
@@ -150,9 +158,10 @@ main()
   check_close("nts: half-width error within 5 %", nts.half_width, 0., 0.05);
   check_close("nts: peak pressure error within 3 %", nts.peak, 0., 0.03);
   check_close("nts: profile L2 error within 6 %", nts.profile, 0., 0.06);
-  deallog << std::setprecision(2) << "nts errors (half-width, peak, profile): "
-          << 100 * nts.half_width << "% " << 100 * nts.peak << "% "
-          << 100 * nts.profile << "%" << std::endl;
+  deallog << std::setprecision(2)
+          << "nts errors (half-width, peak, profile): " << 100 * nts.half_width
+          << "% " << 100 * nts.peak << "% " << 100 * nts.profile << "%"
+          << std::endl;
   deallog << std::setprecision(2) << "errors (half-width, peak, profile): "
           << "coarse " << 100 * coarse.half_width << "% " << 100 * coarse.peak
           << "% " << 100 * coarse.profile << "%, fine " << 100 * fine.half_width

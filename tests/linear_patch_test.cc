@@ -63,12 +63,14 @@ subsection Scene
   set Mesh file = patch.msh
 end
 subsection Body patch
-  set Material model = )" + model + R"(
+  set Material model = )" + model +
+                           R"(
   set Young's modulus = 1000
   set Poisson's ratio = 0.25
 end
 subsection Boundary conditions
-  set Dirichlet = )" + dirichlet.str() + R"(
+  set Dirichlet = )" + dirichlet.str() +
+                           R"(
 end
 subsection Time integration
   set Scheme = quasi-static

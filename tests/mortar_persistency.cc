@@ -33,9 +33,9 @@ namespace
   bouncing_block()
   {
     ParameterHandler prm;
-    ContactDynamics::read_parameters(std::string(SOURCE_DIR) +
-                                       "/../prm/bouncing_block/mortar_stabilized.prm",
-                                     prm);
+    ContactDynamics::read_parameters(
+      std::string(SOURCE_DIR) + "/../prm/bouncing_block/mortar_stabilized.prm",
+      prm);
     // linear elastic bodies: the discrete energy balance is then exact, so
     // the contact work must account for all of the balance error
     for (const std::string body : {"Body block", "Body substrate"})
@@ -141,7 +141,7 @@ end
     simulator.initialize();
     std::vector<double> previous(mortar_of(simulator).node_states(0).size(), 0);
     std::vector<bool>   held(previous.size(), false);
-    double              worst = 0;
+    double              worst  = 0;
     unsigned int        n_held = 0;
     for (unsigned int step = 0; step < 70; ++step)
       {

@@ -51,18 +51,18 @@ namespace
       f << i + 1 << " " << nodes[i][0] << " " << nodes[i][1] << " 0\n";
     f << "$EndNodes\n";
     std::vector<std::string> elements;
-    const auto line = [&](int tag, unsigned a, unsigned b) {
+    const auto               line = [&](int tag, unsigned a, unsigned b) {
       elements.push_back("1 2 " + std::to_string(tag) + " " +
                          std::to_string(tag) + " " + std::to_string(a) + " " +
                          std::to_string(b));
     };
-    const auto quad = [&](int tag, unsigned a, unsigned b, unsigned c,
-                          unsigned d) {
-      elements.push_back("3 2 " + std::to_string(tag) + " " +
-                         std::to_string(tag) + " " + std::to_string(a) + " " +
-                         std::to_string(b) + " " + std::to_string(c) + " " +
-                         std::to_string(d));
-    };
+    const auto quad =
+      [&](int tag, unsigned a, unsigned b, unsigned c, unsigned d) {
+        elements.push_back("3 2 " + std::to_string(tag) + " " +
+                           std::to_string(tag) + " " + std::to_string(a) + " " +
+                           std::to_string(b) + " " + std::to_string(c) + " " +
+                           std::to_string(d));
+      };
     line(1, 1, 2);
     line(3, 2, 3);
     line(3, 3, 4);
@@ -122,16 +122,18 @@ end
 
   // |sum of the residual over x (y) displacement unknowns| / sum of |.|
   void
-  check_force_balance(const std::string &name, ContactDynamics::Simulator<2> &simulator)
+  check_force_balance(const std::string             &name,
+                      ContactDynamics::Simulator<2> &simulator)
   {
     simulator.initialize();
-    ContactDynamics::VectorType trial(simulator.displacement()), residual(trial);
+    ContactDynamics::VectorType trial(simulator.displacement()),
+      residual(trial);
     // random multipliers: the forces on both sides must cancel
     std::mt19937 rng(3);
     for (const auto i : simulator.get_contact()->multiplier_dofs())
       trial(i) = std::uniform_real_distribution<double>(1, 2)(rng);
     simulator.residual_and_jacobian(trial, 1., residual);
-    const auto &dh = simulator.get_dof_handler();
+    const auto &dh     = simulator.get_dof_handler();
     double      sum[2] = {0, 0}, size = 0;
     for (unsigned int d = 0; d < 2; ++d)
       {
@@ -144,16 +146,21 @@ end
           }
       }
     check_true(name + ": contact forces present", size > 1e-3);
-    check_close(name + ": net contact force / total (x)", sum[0] / size, 0.,
+    check_close(name + ": net contact force / total (x)",
+                sum[0] / size,
+                0.,
                 1e-14);
-    check_close(name + ": net contact force / total (y)", sum[1] / size, 0.,
+    check_close(name + ": net contact force / total (y)",
+                sum[1] / size,
+                0.,
                 1e-14);
   }
 
   // weighted gaps of the two secondary nodes, ordered by x
   std::pair<double, double>
-  weighted_gaps(const std::string &name, const std::vector<Point<2>> &top,
-                bool check_balance = false)
+  weighted_gaps(const std::string           &name,
+                const std::vector<Point<2>> &top,
+                bool                         check_balance = false)
   {
     write_mesh(name + ".msh", top);
     ParameterHandler prm;
@@ -167,7 +174,8 @@ end
         ContactDynamics::Simulator<2> other(prm, screen);
         check_force_balance(name, other);
       }
-    ContactDynamics::VectorType trial(simulator.displacement()), residual(trial);
+    ContactDynamics::VectorType trial(simulator.displacement()),
+      residual(trial);
     simulator.residual_and_jacobian(trial, 1., residual);
     const auto &s     = mortar->secondary_surface(0);
     const auto &nodes = mortar->node_states(0);
@@ -194,8 +202,9 @@ main()
           {
             const double xi = 2 * gauss.point(q)[0] - 1;
             integral += dual_shape(xi)[i] * shape(xi)[j] * 2 * gauss.weight(q);
-            worst_sum = std::max(worst_sum,
-                                 std::abs(dual_shape(xi)[0] + dual_shape(xi)[1] - 1));
+            worst_sum =
+              std::max(worst_sum,
+                       std::abs(dual_shape(xi)[0] + dual_shape(xi)[1] - 1));
           }
         worst = std::max(worst, std::abs(integral - (i == j ? 1. : 0.)));
       }
@@ -220,7 +229,8 @@ main()
 
   // a curved secondary surface (the Hertz cylinder) pressed into the block
   ParameterHandler prm;
-  read_test_parameters("curved.prm", R"(
+  read_test_parameters("curved.prm",
+                       R"(
 subsection Scene
   set Scene = hertz
   set Refinement factor = 0.3
@@ -239,7 +249,8 @@ subsection Output
   set Output directory = output_curved
   set VTU interval = 0
 end
-)", prm);
+)",
+                       prm);
   std::ostringstream            screen;
   ContactDynamics::Simulator<2> curved(prm, screen);
   check_force_balance("curved (Hertz) interface", curved);

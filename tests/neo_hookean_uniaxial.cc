@@ -28,14 +28,14 @@ main()
   double l2 = 1;
   for (unsigned int it = 0; it < 50; ++it)
     {
-      const double f  = mu * (l2 - 1 / l2) + lambda * std::log(l1 * l2) / l2;
-      const double df = mu * (1 + 1 / (l2 * l2)) +
-                        lambda * (1 - std::log(l1 * l2)) / (l2 * l2);
+      const double f = mu * (l2 - 1 / l2) + lambda * std::log(l1 * l2) / l2;
+      const double df =
+        mu * (1 + 1 / (l2 * l2)) + lambda * (1 - std::log(l1 * l2)) / (l2 * l2);
       l2 -= f / df;
     }
   const double J       = l1 * l2;
   const double sigma11 = (mu * (l1 * l1 - 1) + lambda * std::log(J)) / J;
-  const double W = 0.5 * mu * (l1 * l1 + l2 * l2 - 2) - mu * std::log(J) +
+  const double W       = 0.5 * mu * (l1 * l1 + l2 * l2 - 2) - mu * std::log(J) +
                    0.5 * lambda * std::log(J) * std::log(J);
 
   ParameterHandler prm;
@@ -92,9 +92,9 @@ end
   grad_u[0] = gradient[0];
   grad_u[1] = gradient[1];
   ContactDynamics::MaterialParameters p;
-  p.model          = "neo-Hookean";
-  p.youngs_modulus = E;
-  p.poissons_ratio = nu;
+  p.model                     = "neo-Hookean";
+  p.youngs_modulus            = E;
+  p.poissons_ratio            = nu;
   const auto         material = ContactDynamics::create_material<2>(p);
   const Tensor<2, 3> sigma    = material->cauchy_stress(grad_u);
   check_close("sigma_11 / closed form", sigma[0][0] / sigma11, 1., 1e-9);

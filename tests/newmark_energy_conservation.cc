@@ -40,17 +40,17 @@ subsection Output
 end
 )",
                        prm);
-  std::ostringstream                 screen;
-  ContactDynamics::Simulator<2>      simulator(prm, screen);
+  std::ostringstream            screen;
+  ContactDynamics::Simulator<2> simulator(prm, screen);
   simulator.initialize();
   const double initial = simulator.energy().initial;
-  double       worst   = 0, min_kinetic = initial;
+  double       worst = 0, min_kinetic = initial;
   for (unsigned int n = 0; n < 400; ++n)
     {
       if (!simulator.advance(0.01))
         check_true("step " + std::to_string(n) + " converged", false);
       const auto &e = simulator.energy();
-      worst = std::max(worst, std::abs(e.kinetic + e.elastic - initial));
+      worst       = std::max(worst, std::abs(e.kinetic + e.elastic - initial));
       min_kinetic = std::min(min_kinetic, e.kinetic);
     }
   dealii::deallog << "steps: " << simulator.n_steps() << std::endl;

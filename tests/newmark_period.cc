@@ -89,7 +89,6 @@ end
               T_measured / T - 1,
               std::pow(omega * dt, 2) / 12,
               2e-4);
-  dealii::deallog << "period elongation at dt = T/20: "
-                  << std::setprecision(3) << 100 * (elongation - 1) << " %"
-                  << std::endl;
+  dealii::deallog << "period elongation at dt = T/20: " << std::setprecision(3)
+                  << 100 * (elongation - 1) << " %" << std::endl;
 }

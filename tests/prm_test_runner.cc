@@ -32,8 +32,8 @@ namespace
   double
   stated_tolerance(const std::string &filename)
   {
-    std::ifstream in(filename);
-    std::string   line;
+    std::ifstream     in(filename);
+    std::string       line;
     const std::string key = "# TEST: energy balance tolerance =";
     while (std::getline(in, line))
       if (line.rfind(key, 0) == 0)
@@ -46,9 +46,9 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream output("output");
-  std::ofstream screen("screen-output");
-  const std::string filename = argv[1];
+  std::ofstream                    output("output");
+  std::ofstream                    screen("screen-output");
+  const std::string                filename = argv[1];
   try
     {
       ContactDynamics::run_parameter_file(filename, screen);
@@ -103,7 +103,8 @@ main(int argc, char **argv)
          << std::endl
          << "energy balance error below " << tolerance
          << " of the energy scale: "
-         << (worst <= tolerance * scale ? "yes" : "NO, " + significant(worst / scale))
+         << (worst <= tolerance * scale ? "yes" :
+                                          "NO, " + significant(worst / scale))
          << std::endl;
   return 0;
 }

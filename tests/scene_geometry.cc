@@ -10,6 +10,8 @@
 
 #include <contact_dynamics/scene.h>
 
+#include "tests.h"
+
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -18,16 +20,14 @@
 #include <set>
 #include <sstream>
 
-#include "tests.h"
-
 using namespace dealii;
 using namespace ContactDynamics;
 
 template <int dim>
 Scene<dim>
-make_scene(const std::string                         &name,
-           const double                               factor = 1,
-           const std::function<void(ParameterHandler &)> &extra = {})
+make_scene(const std::string                             &name,
+           const double                                   factor = 1,
+           const std::function<void(ParameterHandler &)> &extra  = {})
 {
   ParameterHandler prm;
   Scene<dim>::declare_parameters(prm);
@@ -170,9 +170,11 @@ angle_range(const Triangulation<2> &tria, const unsigned int body)
             const Tensor<1, 2> a    = cell->vertex(order[(k + 3) % 4]) - p;
             const Tensor<1, 2> b    = cell->vertex(order[(k + 1) % 4]) - p;
             const double       cosv = a * b / (a.norm() * b.norm());
-            const double angle = std::acos(std::max(-1.0, std::min(1.0, cosv))) * 180 / numbers::PI;
-            min_angle          = std::min(min_angle, angle);
-            max_angle          = std::max(max_angle, angle);
+            const double       angle =
+              std::acos(std::max(-1.0, std::min(1.0, cosv))) * 180 /
+              numbers::PI;
+            min_angle = std::min(min_angle, angle);
+            max_angle = std::max(max_angle, angle);
           }
       }
   return {min_angle, max_angle};
@@ -233,38 +235,63 @@ main()
     const Scene<2>   scene = make_scene<2>("bouncing block");
     Triangulation<2> tria;
     scene.create_triangulation(tria);
-    check_scene<2>("bouncing block", tria, scene.layout(), {"block", "substrate"}, {1, 5},
-                   {{"block_bottom", 1}, {"block_top", 1}, {"block_left", 1},
-                    {"block_right", 1}, {"substrate_top", 5}, {"substrate_bottom", 5},
-                    {"substrate_left", 1}, {"substrate_right", 1}},
+    check_scene<2>("bouncing block",
+                   tria,
+                   scene.layout(),
+                   {"block", "substrate"},
+                   {1, 5},
+                   {{"block_bottom", 1},
+                    {"block_top", 1},
+                    {"block_left", 1},
+                    {"block_right", 1},
+                    {"substrate_top", 5},
+                    {"substrate_bottom", 5},
+                    {"substrate_left", 1},
+                    {"substrate_right", 1}},
                    1e-12);
   }
 
   // Ironing: the tool is a 2 x 1 rectangle on a half-disc of radius 1.
   {
-    const Scene<2>    scene = make_scene<2>("ironing");
+    const Scene<2>    scene  = make_scene<2>("ironing");
     const SceneLayout layout = scene.layout();
     Triangulation<2>  tria;
     scene.create_triangulation(tria);
-    check_scene<2>("ironing", tria, layout, {"tool", "substrate"}, {2 + pi / 2, 48},
-                   {{"tool_arc", pi}, {"tool_sides", 2}, {"tool_top", 2},
-                    {"substrate_top", 12}, {"substrate_bottom", 12},
-                    {"substrate_left", 4}, {"substrate_right", 4}},
+    check_scene<2>("ironing",
+                   tria,
+                   layout,
+                   {"tool", "substrate"},
+                   {2 + pi / 2, 48},
+                   {{"tool_arc", pi},
+                    {"tool_sides", 2},
+                    {"tool_top", 2},
+                    {"substrate_top", 12},
+                    {"substrate_bottom", 12},
+                    {"substrate_left", 4},
+                    {"substrate_right", 4}},
                    1e-3);
     // The straight parts exactly.
-    check_close("ironing: tool_sides exact", surface_measure(tria, layout.surface_id("tool_sides")).first, 2, 1e-12);
-    check_close("ironing: tool_top exact", surface_measure(tria, layout.surface_id("tool_top")).first, 2, 1e-12);
+    check_close("ironing: tool_sides exact",
+                surface_measure(tria, layout.surface_id("tool_sides")).first,
+                2,
+                1e-12);
+    check_close("ironing: tool_top exact",
+                surface_measure(tria, layout.surface_id("tool_top")).first,
+                2,
+                1e-12);
     check_close("ironing: substrate exact", body_measure(tria, 1), 48, 1e-12);
 
     const auto arc = surface_measure(tria, layout.surface_id("tool_arc"));
     const auto top = surface_measure(tria, layout.surface_id("substrate_top"));
-    deallog << "ironing: tool_arc faces " << arc.second << ", substrate_top faces "
-            << top.second << std::endl;
+    deallog << "ironing: tool_arc faces " << arc.second
+            << ", substrate_top faces " << top.second << std::endl;
     check_true("ironing: arc at least as fine as the substrate top",
                arc.first / arc.second <= top.first / top.second);
 
-    const auto [min_angle, max_angle] = angle_range(tria, layout.body_id("tool"));
-    std::cout << "ironing tool angles: " << min_angle << " .. " << max_angle << std::endl;
+    const auto [min_angle, max_angle] =
+      angle_range(tria, layout.body_id("tool"));
+    std::cout << "ironing tool angles: " << min_angle << " .. " << max_angle
+              << std::endl;
     check_true("ironing: tool cell angles in [30, 150] degrees",
                min_angle >= 30 && max_angle <= 150);
 
@@ -273,22 +300,32 @@ main()
     double max_error = 0;
     for (const auto &cell : tria.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() && face->boundary_id() == layout.surface_id("tool_arc"))
+        if (face->at_boundary() &&
+            face->boundary_id() == layout.surface_id("tool_arc"))
           for (const unsigned int v : face->vertex_indices())
-            max_error = std::max(max_error,
-                                 std::abs(face->vertex(v).distance(Point<2>(1.2, 5.02)) - 1));
-    check_close("ironing: refined arc vertices on the circle", max_error, 0, 1e-12);
+            max_error =
+              std::max(max_error,
+                       std::abs(face->vertex(v).distance(Point<2>(1.2, 5.02)) -
+                                1));
+    check_close("ironing: refined arc vertices on the circle",
+                max_error,
+                0,
+                1e-12);
 
     // Refinement factor 2 doubles the element counts.
     const Scene<2>   fine_scene = make_scene<2>("ironing", 2);
     Triangulation<2> fine;
     fine_scene.create_triangulation(fine);
     check_true("ironing factor 2: substrate_top faces doubled",
-               surface_measure(fine, layout.surface_id("substrate_top")).second == 2 * top.second);
+               surface_measure(fine, layout.surface_id("substrate_top"))
+                   .second == 2 * top.second);
     check_true("ironing factor 2: tool_arc faces doubled",
-               surface_measure(fine, layout.surface_id("tool_arc")).second == 2 * arc.second);
+               surface_measure(fine, layout.surface_id("tool_arc")).second ==
+                 2 * arc.second);
     check_close("ironing factor 2: tool area",
-                body_measure(fine, 0), 2 + pi / 2, 1e-3 / 4 * (2 + pi / 2));
+                body_measure(fine, 0),
+                2 + pi / 2,
+                1e-3 / 4 * (2 + pi / 2));
   }
 
   // Patch test: non-matching meshes at y = 0.5.
@@ -296,10 +333,19 @@ main()
     const Scene<2>   scene = make_scene<2>("patch test");
     Triangulation<2> tria;
     scene.create_triangulation(tria);
-    check_scene<2>("patch test", tria, scene.layout(), {"upper", "lower"}, {0.5, 0.5},
-                   {{"upper_top", 1}, {"upper_bottom", 1}, {"upper_left", 0.5},
-                    {"upper_right", 0.5}, {"lower_top", 1}, {"lower_bottom", 1},
-                    {"lower_left", 0.5}, {"lower_right", 0.5}},
+    check_scene<2>("patch test",
+                   tria,
+                   scene.layout(),
+                   {"upper", "lower"},
+                   {0.5, 0.5},
+                   {{"upper_top", 1},
+                    {"upper_bottom", 1},
+                    {"upper_left", 0.5},
+                    {"upper_right", 0.5},
+                    {"lower_top", 1},
+                    {"lower_bottom", 1},
+                    {"lower_left", 0.5},
+                    {"lower_right", 0.5}},
                    1e-12);
   }
 
@@ -309,21 +355,36 @@ main()
     const SceneLayout layout = scene.layout();
     Triangulation<2>  tria;
     scene.create_triangulation(tria);
-    check_scene<2>("hertz", tria, layout, {"cylinder", "block"}, {pi / 2, 32},
-                   {{"cylinder_arc", pi}, {"cylinder_top", 2}, {"block_top", 8},
-                    {"block_bottom", 8}, {"block_left", 4}, {"block_right", 4}},
+    check_scene<2>("hertz",
+                   tria,
+                   layout,
+                   {"cylinder", "block"},
+                   {pi / 2, 32},
+                   {{"cylinder_arc", pi},
+                    {"cylinder_top", 2},
+                    {"block_top", 8},
+                    {"block_bottom", 8},
+                    {"block_left", 4},
+                    {"block_right", 4}},
                    1e-3);
     check_close("hertz: block area exact", body_measure(tria, 1), 32, 1e-10);
-    check_close("hertz: cylinder_top exact", surface_measure(tria, layout.surface_id("cylinder_top")).first, 2, 1e-12);
+    check_close("hertz: cylinder_top exact",
+                surface_measure(tria, layout.surface_id("cylinder_top")).first,
+                2,
+                1e-12);
     // The lowest point of the cylinder touches the block top (gap 0).
     double lowest = 1e9;
     for (const auto &cell : tria.active_cell_iterators())
       if (cell->material_id() == 0)
         for (const unsigned int v : cell->vertex_indices())
           lowest = std::min(lowest, cell->vertex(v)[1]);
-    check_close("hertz: lowest cylinder point at the block top", lowest, 4, 1e-12);
+    check_close("hertz: lowest cylinder point at the block top",
+                lowest,
+                4,
+                1e-12);
     const auto arc = surface_measure(tria, layout.surface_id("cylinder_arc"));
-    check_true("hertz: arc elements at most R/40", arc.first / arc.second <= 1.0 / 40);
+    check_true("hertz: arc elements at most R/40",
+               arc.first / arc.second <= 1.0 / 40);
   }
 
   // Bar impact, wall and bar targets.
@@ -331,26 +392,43 @@ main()
     const Scene<2>   scene = make_scene<2>("bar impact");
     Triangulation<2> tria;
     scene.create_triangulation(tria);
-    check_scene<2>("bar impact (wall)", tria, scene.layout(), {"striker", "target"},
+    check_scene<2>("bar impact (wall)",
+                   tria,
+                   scene.layout(),
+                   {"striker", "target"},
                    {0.1, 0.02},
-                   {{"striker_left", 0.1}, {"striker_right", 0.1}, {"striker_top", 1},
-                    {"striker_bottom", 1}, {"target_left", 0.1}, {"target_right", 0.1},
-                    {"target_top", 0.2}, {"target_bottom", 0.2}},
+                   {{"striker_left", 0.1},
+                    {"striker_right", 0.1},
+                    {"striker_top", 1},
+                    {"striker_bottom", 1},
+                    {"target_left", 0.1},
+                    {"target_right", 0.1},
+                    {"target_top", 0.2},
+                    {"target_bottom", 0.2}},
                    1e-12);
 
-    const Scene<2> bar_scene = make_scene<2>("bar impact", 1, [](ParameterHandler &prm) {
-      prm.enter_subsection("Bar impact");
-      prm.set("Target", "bar");
-      prm.set("Target length", "0.5");
-      prm.leave_subsection();
-    });
+    const Scene<2> bar_scene =
+      make_scene<2>("bar impact", 1, [](ParameterHandler &prm) {
+        prm.enter_subsection("Bar impact");
+        prm.set("Target", "bar");
+        prm.set("Target length", "0.5");
+        prm.leave_subsection();
+      });
     Triangulation<2> bar;
     bar_scene.create_triangulation(bar);
-    check_scene<2>("bar impact (bar)", bar, bar_scene.layout(), {"striker", "target"},
+    check_scene<2>("bar impact (bar)",
+                   bar,
+                   bar_scene.layout(),
+                   {"striker", "target"},
                    {0.1, 0.05},
-                   {{"striker_left", 0.1}, {"striker_right", 0.1}, {"striker_top", 1},
-                    {"striker_bottom", 1}, {"target_left", 0.1}, {"target_right", 0.1},
-                    {"target_top", 0.5}, {"target_bottom", 0.5}},
+                   {{"striker_left", 0.1},
+                    {"striker_right", 0.1},
+                    {"striker_top", 1},
+                    {"striker_bottom", 1},
+                    {"target_left", 0.1},
+                    {"target_right", 0.1},
+                    {"target_top", 0.5},
+                    {"target_bottom", 0.5}},
                    1e-12);
   }
 
@@ -359,20 +437,34 @@ main()
     const Scene<2>   scene = make_scene<2>("block");
     Triangulation<2> tria;
     scene.create_triangulation(tria);
-    check_scene<2>("block 2d", tria, scene.layout(), {"body"}, {1},
-                   {{"left", 1}, {"right", 1}, {"bottom", 1}, {"top", 1}}, 1e-12);
+    check_scene<2>("block 2d",
+                   tria,
+                   scene.layout(),
+                   {"body"},
+                   {1},
+                   {{"left", 1}, {"right", 1}, {"bottom", 1}, {"top", 1}},
+                   1e-12);
 
-    const Scene<3> scene3 = make_scene<3>("block", 1, [](ParameterHandler &prm) {
-      prm.enter_subsection("Block");
-      prm.set("Origin", "0, 0, 0");
-      prm.set("Size", "1, 2, 3");
-      prm.set("Subdivisions", "1, 2, 3");
-      prm.leave_subsection();
-    });
+    const Scene<3> scene3 =
+      make_scene<3>("block", 1, [](ParameterHandler &prm) {
+        prm.enter_subsection("Block");
+        prm.set("Origin", "0, 0, 0");
+        prm.set("Size", "1, 2, 3");
+        prm.set("Subdivisions", "1, 2, 3");
+        prm.leave_subsection();
+      });
     Triangulation<3> tria3;
     scene3.create_triangulation(tria3);
-    check_scene<3>("block 3d", tria3, scene3.layout(), {"body"}, {6},
-                   {{"left", 6}, {"right", 6}, {"bottom", 3}, {"top", 3}, {"front", 2},
+    check_scene<3>("block 3d",
+                   tria3,
+                   scene3.layout(),
+                   {"body"},
+                   {6},
+                   {{"left", 6},
+                    {"right", 6},
+                    {"bottom", 3},
+                    {"top", 3},
+                    {"front", 2},
                     {"back", 2}},
                    1e-12);
   }
@@ -385,14 +477,22 @@ main()
     });
     Triangulation<2> tria;
     scene.create_triangulation(tria);
-    check_scene<2>("gmsh", tria, scene.layout(), {"upper", "lower"}, {1, 2},
-                   {{"lower_bottom", 2}, {"lower_top", 2}, {"lower_sides", 2},
-                    {"upper_bottom", 1}, {"upper_rest", 3}},
+    check_scene<2>("gmsh",
+                   tria,
+                   scene.layout(),
+                   {"upper", "lower"},
+                   {1, 2},
+                   {{"lower_bottom", 2},
+                    {"lower_top", 2},
+                    {"lower_sides", 2},
+                    {"upper_bottom", 1},
+                    {"upper_rest", 3}},
                    1e-12);
   }
 
   // Error messages.
-  const auto print_error = [](const std::string &label, const std::function<void()> &f) {
+  const auto print_error = [](const std::string           &label,
+                              const std::function<void()> &f) {
     try
       {
         f();
@@ -406,7 +506,9 @@ main()
   print_error("unknown surface", [] {
     make_scene<2>("bouncing block").layout().surface_id("blok_top");
   });
-  print_error("unknown body", [] { make_scene<2>("patch test").layout().body_id("top"); });
+  print_error("unknown body", [] {
+    make_scene<2>("patch test").layout().body_id("top");
+  });
   print_error("ironing in 3-D", [] {
     Triangulation<3> tria;
     make_scene<3>("ironing").create_triangulation(tria);

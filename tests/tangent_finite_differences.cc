@@ -20,9 +20,9 @@ namespace
   check_material(const std::string &model)
   {
     ContactDynamics::MaterialParameters p;
-    p.model          = model;
-    p.youngs_modulus = 3.;
-    p.poissons_ratio = 0.3;
+    p.model             = model;
+    p.youngs_modulus    = 3.;
+    p.poissons_ratio    = 0.3;
     const auto material = ContactDynamics::create_material<2>(p);
 
     Tensor<2, 2> grad_u;
@@ -35,7 +35,7 @@ namespace
     double       W;
     material->evaluate(grad_u, P, A, W);
 
-    const double h = 1e-6;
+    const double h     = 1e-6;
     double       worst = 0, worst_energy = 0;
     for (unsigned int k = 0; k < 2; ++k)
       for (unsigned int l = 0; l < 2; ++l)
@@ -56,7 +56,10 @@ namespace
                                std::abs((Pp[i][j] - Pm[i][j]) / (2 * h) -
                                         A[i][j][k][l]));
         }
-    check_close(model + ": |dP/dF - finite differences| / E", worst / 3., 0., 1e-8);
+    check_close(model + ": |dP/dF - finite differences| / E",
+                worst / 3.,
+                0.,
+                1e-8);
     check_close(model + ": |dW/dF - P| / E", worst_energy / 3., 0., 1e-8);
   }
 
@@ -84,7 +87,8 @@ subsection Body body
   set Initial velocity = 0.3*y; -0.2*x
 end
 subsection Time integration
-  set Scheme = )" + scheme + R"(
+  set Scheme = )" + scheme +
+                           R"(
 end
 subsection Output
   set Output directory = output_jacobian
@@ -98,8 +102,7 @@ end
 
     using ContactDynamics::VectorType;
     VectorType trial(simulator.displacement()), direction(trial),
-      residual(trial), residual_plus(trial), residual_minus(trial),
-      jd(trial);
+      residual(trial), residual_plus(trial), residual_minus(trial), jd(trial);
     std::mt19937                           rng(42);
     std::uniform_real_distribution<double> uniform(-1., 1.);
     for (auto &x : trial)
@@ -113,8 +116,7 @@ end
     simulator.residual_and_jacobian(shifted, dt, residual_plus);
     shifted.add(-2 * h, direction);
     simulator.residual_and_jacobian(shifted, dt, residual_minus);
-    const auto &jacobian =
-      simulator.residual_and_jacobian(trial, dt, residual);
+    const auto &jacobian = simulator.residual_and_jacobian(trial, dt, residual);
 
     jacobian.vmult(jd, direction);
     VectorType fd(residual_plus);

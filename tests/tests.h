@@ -13,12 +13,12 @@ inline std::ofstream &
 initlog()
 {
   // the library uses MPI (Trilinos), also in serial
-  static int                                      argc = 1;
+  static int                                      argc   = 1;
   static char                                     name[] = "test";
   static char                                    *args[] = {name, nullptr};
   static char                                   **argv   = args;
   static dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  static std::ofstream logfile("output");
+  static std::ofstream                            logfile("output");
   dealii::deallog.attach(logfile);
   dealii::deallog.depth_console(0);
   logfile << std::setprecision(6);
@@ -44,8 +44,7 @@ check_close(const std::string &name,
 inline void
 check_true(const std::string &name, const bool condition)
 {
-  dealii::deallog << name << ": " << (condition ? "OK" : "FAILED")
-                  << std::endl;
+  dealii::deallog << name << ": " << (condition ? "OK" : "FAILED") << std::endl;
 }
 
 
@@ -57,9 +56,9 @@ check_true(const std::string &name, const bool condition)
 
 // Writes `text` to `filename` and reads it as the application would.
 inline void
-read_test_parameters(const std::string         &filename,
-                     const std::string         &text,
-                     dealii::ParameterHandler  &prm)
+read_test_parameters(const std::string        &filename,
+                     const std::string        &text,
+                     dealii::ParameterHandler &prm)
 {
   {
     std::ofstream f(filename);

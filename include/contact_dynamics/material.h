@@ -17,10 +17,10 @@ namespace ContactDynamics
   /** Parameters of one body's material, read from `subsection Body <name>`. */
   struct MaterialParameters
   {
-    std::string model = "linear elastic";
-    double      youngs_modulus = 1.;
-    double      poissons_ratio = 0.;
-    double      density        = 1.;
+    std::string model                          = "linear elastic";
+    double      youngs_modulus                 = 1.;
+    double      poissons_ratio                 = 0.;
+    double      density                        = 1.;
     double      rayleigh_mass_coefficient      = 0.;
     double      rayleigh_stiffness_coefficient = 0.;
 

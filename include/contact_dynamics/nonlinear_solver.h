@@ -30,8 +30,8 @@ namespace ContactDynamics
     virtual ~NonlinearSystem() = default;
 
     virtual void
-    assemble(const bool                   with_jacobian,
-             TrilinosWrappers::MPI::Vector &residual,
+    assemble(const bool                      with_jacobian,
+             TrilinosWrappers::MPI::Vector  &residual,
              TrilinosWrappers::SparseMatrix &jacobian) = 0;
 
     virtual void
@@ -56,10 +56,10 @@ namespace ContactDynamics
   public:
     struct Result
     {
-      bool         converged      = false;
-      unsigned int iterations     = 0; // linear solves
+      bool         converged        = false;
+      unsigned int iterations       = 0; // linear solves
       double       initial_residual = 0;
-      double       final_residual = 0;
+      double       final_residual   = 0;
       std::string  failure;
     };
 
@@ -95,9 +95,9 @@ namespace ContactDynamics
     std::string  linear_solver      = "KLU";
     bool         verbose_           = false;
 
-    std::unique_ptr<SolverControl>                   solver_control;
+    std::unique_ptr<SolverControl>                  solver_control;
     std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
-    bool factorization_valid = false;
+    bool                                            factorization_valid = false;
   };
 } // namespace ContactDynamics
 

@@ -70,8 +70,8 @@ namespace ContactDynamics
             &nodal_fields = {});
 
   private:
-    std::string                               directory;
-    std::vector<std::string>                  extra_names;
+    std::string                                 directory;
+    std::vector<std::string>                    extra_names;
     std::vector<std::pair<double, std::string>> records;
   };
 } // namespace ContactDynamics

@@ -22,8 +22,8 @@ namespace ContactDynamics
    */
   struct SceneLayout
   {
-    std::vector<std::string>                    body_names;
-    std::map<std::string, types::boundary_id>   surfaces;
+    std::vector<std::string>                  body_names;
+    std::map<std::string, types::boundary_id> surfaces;
 
     /** Material id of a body; throws a message listing the known bodies. */
     types::material_id
@@ -84,11 +84,11 @@ namespace ContactDynamics
     double hertz_gap;
 
     // "bar impact" scene
-    double      bar_length;
-    double      bar_height;
-    double      bar_gap;
-    std::string bar_target;
-    double      bar_target_length;
+    double       bar_length;
+    double       bar_height;
+    double       bar_gap;
+    std::string  bar_target;
+    double       bar_target_length;
     unsigned int bar_elements;
   };
 } // namespace ContactDynamics

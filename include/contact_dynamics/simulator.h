@@ -36,12 +36,12 @@ namespace ContactDynamics
   /** Energies of the discrete system; see doc/theory.md. */
   struct EnergyBalance
   {
-    double kinetic     = 0;
-    double elastic     = 0;
-    double dissipated  = 0; // time integral of v.C v
-    double external    = 0; // work of reactions and body forces
-    double initial     = 0; // kinetic + elastic at t = 0
-    double frictional  = 0; // dissipated by contact friction
+    double kinetic    = 0;
+    double elastic    = 0;
+    double dissipated = 0; // time integral of v.C v
+    double external   = 0; // work of reactions and body forces
+    double initial    = 0; // kinetic + elastic at t = 0
+    double frictional = 0; // dissipated by contact friction
 
     double
     error() const
@@ -145,7 +145,7 @@ namespace ContactDynamics
   private:
     // NonlinearSystem
     void
-    assemble(const bool with_jacobian,
+    assemble(const bool  with_jacobian,
              VectorType &residual,
              MatrixType &jacobian) override;
     void
@@ -177,32 +177,32 @@ namespace ContactDynamics
     DirichletConditions<dim>    dirichlet;
     TimeIntegrator              integrator;
     // the Jacobian must outlive the factorization that refers to it
-    MatrixType                  jacobian;
-    NewtonSolver                newton;
-    OutputParameters            output_parameters;
-    double                      time_step;
-    double                      end_time;
-    double                      minimum_time_step;
+    MatrixType       jacobian;
+    NewtonSolver     newton;
+    OutputParameters output_parameters;
+    double           time_step;
+    double           end_time;
+    double           minimum_time_step;
 
-    Triangulation<dim>                   triangulation;
+    Triangulation<dim>                       triangulation;
     std::unique_ptr<ContactFormulation<dim>> contact;
-    std::unique_ptr<FESystem<dim>>       fe;
-    DoFHandler<dim>                      dof_handler;
-    IndexSet                             locally_owned;
-    AffineConstraints<double>            increment_constraints;
-    std::unique_ptr<SolidMechanics<dim>> mechanics;
+    std::unique_ptr<FESystem<dim>>           fe;
+    DoFHandler<dim>                          dof_handler;
+    IndexSet                                 locally_owned;
+    AffineConstraints<double>                increment_constraints;
+    std::unique_ptr<SolidMechanics<dim>>     mechanics;
 
     // state at t_n, the trial state at t_{n+1}, and work vectors
     VectorType u, v, a, u_new, v_new, a_new;
     VectorType residual, residual_full, residual_full_old, increment,
       body_force;
 
-    double       time = 0;
-    double       dt_current = 0;
-    unsigned int step = 0;
-    unsigned int cumulative_newton_iterations = 0;
-    unsigned int time_step_cuts = 0;
-    bool         structure_changed = true;
+    double        time                         = 0;
+    double        dt_current                   = 0;
+    unsigned int  step                         = 0;
+    unsigned int  cumulative_newton_iterations = 0;
+    unsigned int  time_step_cuts               = 0;
+    bool          structure_changed            = true;
     EnergyBalance energies;
 
     std::unique_ptr<StatisticsFile>      statistics;

@@ -105,9 +105,9 @@ namespace ContactDynamics
       acceleration
     };
     Predictor predictor = Predictor::velocity;
-    bool   dynamic = true;
-    double beta_   = 0.25;
-    double gamma_  = 0.5;
+    bool      dynamic   = true;
+    double    beta_     = 0.25;
+    double    gamma_    = 0.5;
   };
 } // namespace ContactDynamics
 

@@ -64,7 +64,8 @@ namespace ContactDynamics
 
     /** The nonzero derivatives of x with respect to the global unknowns. */
     inline std::vector<std::pair<types::global_dof_index, double>>
-    derivatives(const AD &x, const std::vector<types::global_dof_index> &unknowns)
+    derivatives(const AD                                   &x,
+                const std::vector<types::global_dof_index> &unknowns)
     {
       std::vector<std::pair<types::global_dof_index, double>> result;
       for (unsigned int k = 0; k < unknowns.size() && k < unsigned(x.size());
@@ -98,7 +99,8 @@ namespace ContactDynamics
         for (unsigned int d = 0; d < 2; ++d, ++next)
           {
             Assert(unknowns[next] == surface.dofs[node][d], ExcInternalError());
-            x[d] = AD(unknowns.size(), next,
+            x[d] = AD(unknowns.size(),
+                      next,
                       surface.reference[node][d] + state.u(unknowns[next]));
             // v = c_v u + (terms of the old state)
             v[d]       = state.c_v * x[d];

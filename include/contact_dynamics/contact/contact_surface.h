@@ -47,7 +47,8 @@ namespace ContactDynamics
 
     /** Current position x = X + u of a node. */
     Point<dim>
-    position(const unsigned int node, const TrilinosWrappers::MPI::Vector &u) const
+    position(const unsigned int                   node,
+             const TrilinosWrappers::MPI::Vector &u) const
     {
       Point<dim> x = reference[node];
       for (unsigned int d = 0; d < dim; ++d)
@@ -59,11 +60,11 @@ namespace ContactDynamics
     unsigned int
     neighbour(const unsigned int node, const unsigned int face) const;
 
-    std::vector<Point<dim>>                     reference; // node positions
-    std::vector<std::vector<types::global_dof_index>> dofs; // per node
-    std::vector<std::array<unsigned int, 2>>    faces;     // node indices
-    std::vector<std::vector<unsigned int>>      node_faces;
-    std::vector<double>                         reference_weight; // integral N_j
+    std::vector<Point<dim>> reference;                       // node positions
+    std::vector<std::vector<types::global_dof_index>> dofs;  // per node
+    std::vector<std::array<unsigned int, 2>>          faces; // node indices
+    std::vector<std::vector<unsigned int>>            node_faces;
+    std::vector<double> reference_weight; // integral N_j
   };
 } // namespace ContactDynamics
 

@@ -106,11 +106,12 @@ namespace ContactDynamics
       xi = 0;
       for (unsigned int it = 0; it < 30; ++it)
         {
-          const Vec<double> x  = interpolate(x0, x1, xi);
-          const Vec<double> n  = interpolate(n0, n1, xi);
-          const double      F  = cross(Vec<double>(x - p), n);
-          const double      dF = cross(Vec<double>((x1 - x0) / 2.), n) +
-                            cross(Vec<double>(x - p), Vec<double>((n1 - n0) / 2.));
+          const Vec<double> x = interpolate(x0, x1, xi);
+          const Vec<double> n = interpolate(n0, n1, xi);
+          const double      F = cross(Vec<double>(x - p), n);
+          const double      dF =
+            cross(Vec<double>((x1 - x0) / 2.), n) +
+            cross(Vec<double>(x - p), Vec<double>((n1 - n0) / 2.));
           if (std::abs(dF) < 1e-300)
             return false;
           const double step = F / dF;
@@ -141,9 +142,8 @@ namespace ContactDynamics
       const Vec<Number> x    = interpolate(x0, x1, xi_n);
       const Vec<Number> n    = interpolate(n0, n1, xi_n);
       const Number      F    = cross(Vec<Number>(x - p), n);
-      const Number      dF =
-        cross(Vec<Number>((x1 - x0) / 2.), n) +
-        cross(Vec<Number>(x - p), Vec<Number>((n1 - n0) / 2.));
+      const Number      dF   = cross(Vec<Number>((x1 - x0) / 2.), n) +
+                        cross(Vec<Number>(x - p), Vec<Number>((n1 - n0) / 2.));
       return xi_n - F / dF;
     }
 

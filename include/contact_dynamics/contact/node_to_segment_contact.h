@@ -41,8 +41,10 @@ namespace ContactDynamics
     }
 
     BoundingBox<dim>
-    patch_box(const PairData &pair, const unsigned int patch,
-              const VectorType &u, double &size) const override;
+    patch_box(const PairData    &pair,
+              const unsigned int patch,
+              const VectorType  &u,
+              double            &size) const override;
 
     std::vector<unsigned int>
     patch_nodes(const PairData &, const unsigned int patch) const override
@@ -51,9 +53,10 @@ namespace ContactDynamics
     }
 
     std::vector<types::global_dof_index>
-    patch_unknowns(const PairData                  &pair,
-                   const unsigned int               patch,
-                   const std::vector<unsigned int> &primary_faces) const override;
+    patch_unknowns(
+      const PairData                  &pair,
+      const unsigned int               patch,
+      const std::vector<unsigned int> &primary_faces) const override;
 
     void
     assemble_patch(PairData                        &pair,

@@ -178,8 +178,10 @@ namespace ContactDynamics
 
     /** Box around a patch in the configuration u, before enlarging. */
     virtual BoundingBox<dim>
-    patch_box(const PairData &pair, const unsigned int patch,
-              const VectorType &u, double &size) const = 0;
+    patch_box(const PairData    &pair,
+              const unsigned int patch,
+              const VectorType  &u,
+              double            &size) const = 0;
 
     /** Secondary nodes whose gaps a patch contributes to. */
     virtual std::vector<unsigned int>
@@ -214,10 +216,10 @@ namespace ContactDynamics
 
     /** A residual row of a contact force with its derivatives. */
     void
-    add_force(const types::global_dof_index               row,
-              const double                                value,
+    add_force(const types::global_dof_index row,
+              const double                  value,
               const std::vector<std::pair<types::global_dof_index, double>>
-                                                &derivatives,
+                                              &derivatives,
               const AffineConstraints<double> &constraints,
               const bool                       with_jacobian,
               VectorType                      &residual,
@@ -250,17 +252,17 @@ namespace ContactDynamics
 
     // contact forces (and their friction part) at the last assembly and at
     // the last committed step
-    VectorType   force, force_committed, committed_u;
-    VectorType   friction_force, friction_force_committed;
-    double       frictional_dissipation = 0;
-    bool         friction               = false;
-    unsigned int n_stick = 0, n_slip = 0;
-    VectorType   gap_field; // normalized gap at the multiplier dofs
-    double       contact_work   = 0;
-    unsigned int n_active       = 0;
-    double       total_force[2] = {0, 0};
-    bool         have_state     = false;
-    const VectorType *last_u    = nullptr;
+    VectorType        force, force_committed, committed_u;
+    VectorType        friction_force, friction_force_committed;
+    double            frictional_dissipation = 0;
+    bool              friction               = false;
+    unsigned int      n_stick = 0, n_slip = 0;
+    VectorType        gap_field; // normalized gap at the multiplier dofs
+    double            contact_work   = 0;
+    unsigned int      n_active       = 0;
+    double            total_force[2] = {0, 0};
+    bool              have_state     = false;
+    const VectorType *last_u         = nullptr;
 
     std::vector<std::pair<unsigned int, unsigned int>> monitored; // pair, node
     std::unique_ptr<std::ofstream>                     history;
