@@ -163,7 +163,7 @@ namespace ContactDynamics
       {
         const Vec<AD> &y0 = xp.at(p.faces[pf][0]), &y1 = xp.at(p.faces[pf][1]);
         // only faces that face the secondary one
-        if (value(MortarGeometry::face_normal(y0, y1)) * value(face_n) > -0.5)
+        if (value(MortarGeometry::face_normal(y0, y1)) * value(face_n) >= 0)
           continue;
         double xi_c, xi_d;
         if (!MortarGeometry::project_along_normal_field(value(x0),

@@ -118,7 +118,8 @@ namespace ContactDynamics
           xi -= step;
           if (std::abs(xi) > 1e3)
             return false;
-          if (std::abs(step) < 1e-14)
+          // relative: far projections (|xi| > 1) stagnate at round-off
+          if (std::abs(step) < 1e-13 * (1 + std::abs(xi)))
             return true;
         }
       return false;
