@@ -64,13 +64,7 @@ namespace ContactDynamics
                                 const VectorType  &u,
                                 double            &size) const
   {
-    const auto      &face = pair.secondary.faces[patch];
-    const Point<dim> a    = pair.secondary.position(face[0], u);
-    const Point<dim> b    = pair.secondary.position(face[1], u);
-    BoundingBox<dim> box(std::make_pair(a, a));
-    box.merge_with(BoundingBox<dim>(std::make_pair(b, b)));
-    size = a.distance(b);
-    return box;
+    return pair.secondary.face_box(patch, u, size);
   }
 
   template <int dim>

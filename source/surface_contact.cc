@@ -200,14 +200,11 @@ namespace ContactDynamics
         secondary.push_back(patch_box(pair, p, u, size));
         secondary.back().extend(margin_factor * size);
       }
-    for (const auto &face : pair.primary.faces)
+    for (unsigned int f = 0; f < pair.primary.n_faces(); ++f)
       {
-        const Point<dim> a = pair.primary.position(face[0], u);
-        const Point<dim> b = pair.primary.position(face[1], u);
-        BoundingBox<dim> box(std::make_pair(a, a));
-        box.merge_with(BoundingBox<dim>(std::make_pair(b, b)));
-        box.extend(margin_factor * a.distance(b));
-        primary.push_back(box);
+        double length = 0;
+        primary.push_back(pair.primary.face_box(f, u, length));
+        primary.back().extend(margin_factor * length);
       }
     return find_candidate_pairs(secondary, primary);
   }

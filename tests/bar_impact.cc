@@ -94,22 +94,11 @@ end
             last = simulator.current_time();
           }
       }
-    // momentum / mass of the striker with row-sum (lumped) nodal masses
-    const auto &dof_handler = simulator.get_dof_handler();
-    double      momentum = 0, mass = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->material_id() == 0)
-        for (unsigned int v = 0; v < 4; ++v)
-          {
-            momentum += cell->measure() / 4 *
-                        simulator.velocity()(cell->vertex_dof_index(v, 0));
-            mass += cell->measure() / 4;
-          }
     const auto &e = simulator.energy();
     return {first,
             last - first + dt,
             -impulse / (last - first + dt),
-            momentum / mass,
+            mean_velocity_x(simulator, 0),
             (e.kinetic + e.elastic) / initial - 1};
   }
 } // namespace

@@ -54,6 +54,25 @@ check_true(const std::string &name, const bool condition)
 
 #include <string>
 
+// Mean x velocity (momentum / mass) of the Q1 body with material id `body`,
+// with row-sum (lumped) nodal masses, which give the momentum exactly
+// (uniform density and parallelogram cells).
+template <typename Simulator>
+double
+mean_velocity_x(const Simulator &simulator, const unsigned int body)
+{
+  double momentum = 0, mass = 0;
+  for (const auto &cell : simulator.get_dof_handler().active_cell_iterators())
+    if (cell->material_id() == body)
+      for (unsigned int v = 0; v < 4; ++v)
+        {
+          momentum += cell->measure() / 4 *
+                      simulator.velocity()(cell->vertex_dof_index(v, 0));
+          mass += cell->measure() / 4;
+        }
+  return momentum / mass;
+}
+
 // Writes `text` to `filename` and reads it as the application would.
 inline void
 read_test_parameters(const std::string        &filename,

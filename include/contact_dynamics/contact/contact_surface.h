@@ -3,6 +3,7 @@
 #ifndef contact_dynamics_contact_contact_surface_h
 #define contact_dynamics_contact_contact_surface_h
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/point.h>
 
 #include <deal.II/dofs/dof_handler.h>
@@ -54,6 +55,20 @@ namespace ContactDynamics
       for (unsigned int d = 0; d < dim; ++d)
         x[d] += u(dofs[node][d]);
       return x;
+    }
+
+    /** Bounding box of a face in the configuration u, and its length. */
+    BoundingBox<dim>
+    face_box(const unsigned int                   face,
+             const TrilinosWrappers::MPI::Vector &u,
+             double                              &length) const
+    {
+      const Point<dim> a = position(faces[face][0], u);
+      const Point<dim> b = position(faces[face][1], u);
+      BoundingBox<dim> box(std::make_pair(a, a));
+      box.merge_with(BoundingBox<dim>(std::make_pair(b, b)));
+      length = a.distance(b);
+      return box;
     }
 
     /** The other node of the face at `node` that is not `face`, or invalid. */
