@@ -65,6 +65,23 @@ namespace ContactDynamics
   } // namespace
 
   template <int dim>
+  double
+  NodeToSegmentContact<dim>::traction_per_multiplier(
+    const PairData    &pair,
+    const unsigned int node,
+    const VectorType  &u) const
+  {
+    double current = 0;
+    for (const unsigned int face : pair.secondary.node_faces[node])
+      {
+        double length;
+        pair.secondary.face_box(face, u, length);
+        current += length / 2;
+      }
+    return current > 0 ? pair.secondary.reference_weight[node] / current : 1.;
+  }
+
+  template <int dim>
   BoundingBox<dim>
   NodeToSegmentContact<dim>::patch_box(const PairData    &pair,
                                        const unsigned int node,

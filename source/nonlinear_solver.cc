@@ -49,6 +49,15 @@ namespace ContactDynamics
     verbose_           = prm.get_bool("Verbose");
   }
 
+  void
+  NewtonSolver::release_factorization()
+  {
+    // the solver refers to its control, so it goes first
+    direct_solver.reset();
+    solver_control.reset();
+    factorization_valid = false;
+  }
+
   NewtonSolver::Result
   NewtonSolver::solve(NonlinearSystem                &system,
                       TrilinosWrappers::SparseMatrix &jacobian,
@@ -116,6 +125,7 @@ namespace ContactDynamics
           {
             if (need_jacobian)
               {
+                release_factorization();
                 solver_control =
                   std::make_unique<SolverControl>(1, 0, false, false);
                 direct_solver =

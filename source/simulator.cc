@@ -174,6 +174,7 @@ namespace ContactDynamics
       dsp.add(i, i);
     if (contact)
       contact->add_sparsity(dsp);
+    newton.release_factorization();
     jacobian.reinit(locally_owned, locally_owned, dsp, MPI_COMM_WORLD);
     structure_changed = true;
   }

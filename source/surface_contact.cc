@@ -319,7 +319,7 @@ namespace ContactDynamics
     if (complementarity.normalize_c_n && node.projected)
       for (const auto &d : pair.weight[j].derivatives)
         v.derivatives[d.first] -= pair.slip_rate[j].value * d.second / (w * w);
-    node.tangential = lambda_t;
+    node.tangential = lambda_t * traction_per_multiplier(pair, j, *last_u);
     node.slip_rate  = v.value;
     node.stick      = false;
     if (constraints.is_constrained(row))
@@ -411,7 +411,7 @@ namespace ContactDynamics
             const types::global_dof_index row  = pair.secondary.dofs[j][dim];
             const double scale  = pair.secondary.reference_weight[j];
             const double lambda = state.u(row);
-            node.pressure       = lambda;
+            node.pressure = lambda * traction_per_multiplier(pair, j, state.u);
             node.gap            = pair.gap[j].value;
             node.weight         = pair.weight[j].value;
             // a mortar node needs more than half its support covered: on a

@@ -89,10 +89,19 @@ end
     const double p0     = 2 * P / (M_PI * a);
 
     // tributary length of a node: integral of N_j over the covered part of
-    // the surface (mortar), or in the reference configuration (nts)
+    // the surface (mortar), or half its current faces (nts, whose pressure
+    // output is the nodal force over that length)
     const auto weight = [&](const unsigned int j) {
-      return formulation == "nts" ? surface.reference_weight[j] :
-                                    nodes[j].weight;
+      if (formulation != "nts")
+        return nodes[j].weight;
+      double length = 0;
+      for (const unsigned int f : surface.node_faces[j])
+        {
+          double l;
+          surface.face_box(f, simulator.displacement(), l);
+          length += l / 2;
+        }
+      return length;
     };
     double m0 = 0, m1 = 0, m2 = 0, peak = 0;
     for (unsigned int j = 0; j < nodes.size(); ++j)
@@ -123,7 +132,6 @@ end
                 m0 / P,
                 1.,
                 5e-3);
-    // node-to-segment: nodal force / reference tributary length
     return {a_h / a - 1, peak / p0 - 1, std::sqrt(num / den)};
   }
 } // namespace

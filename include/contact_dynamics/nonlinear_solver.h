@@ -88,6 +88,14 @@ namespace ContactDynamics
       return verbose_;
     }
 
+    /**
+     * Forget the factorization. Must be called before the Jacobian is
+     * reinitialized with a new sparsity pattern: the direct solver keeps a
+     * pointer to the matrix, and MUMPS touches it when it is destroyed.
+     */
+    void
+    release_factorization();
+
   private:
     double       absolute_tolerance = 1e-10;
     double       relative_tolerance = 1e-10;

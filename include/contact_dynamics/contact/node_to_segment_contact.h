@@ -40,6 +40,15 @@ namespace ContactDynamics
       return pair.secondary.n_nodes();
     }
 
+    /**
+     * The nodal force is the multiplier times the reference tributary
+     * length; the traction divides it by the current one.
+     */
+    double
+    traction_per_multiplier(const PairData    &pair,
+                            const unsigned int node,
+                            const VectorType  &u) const override;
+
     BoundingBox<dim>
     patch_box(const PairData    &pair,
               const unsigned int patch,

@@ -172,6 +172,19 @@ namespace ContactDynamics
       return 1e-12;
     }
 
+    /**
+     * Traction on the current surface per unit multiplier at secondary node
+     * j, for the output of pressures: 1 where the multipliers are tractions
+     * on the current surface (mortar).
+     */
+    virtual double
+    traction_per_multiplier(const PairData &,
+                            const unsigned int,
+                            const VectorType &) const
+    {
+      return 1.;
+    }
+
     /** Number of patches of a pair (faces or nodes of the secondary side). */
     virtual unsigned int
     n_patches(const PairData &pair) const = 0;
