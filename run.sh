@@ -8,6 +8,9 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 packages=(cmake g++ make libdeal.ii-dev numdiff perl openmpi-bin)
+# scripts that need more (the benchmark plots) name it here
+read -r -a extra <<< "${EXTRA_PACKAGES:-}"
+packages+=("${extra[@]}")
 default_prm=prm/bouncing_block/mortar_stabilized.prm
 jobs=$(nproc 2>/dev/null || echo 2)
 

@@ -49,10 +49,15 @@ check_true(const std::string &name, const bool condition)
 
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
 
 #include <contact_dynamics/application.h>
 
+#include <functional>
+#include <map>
+#include <sstream>
 #include <string>
+#include <vector>
 
 // Mean x velocity (momentum / mass) of the Q1 body with material id `body`,
 // with row-sum (lumped) nodal masses, which give the momentum exactly
@@ -84,6 +89,66 @@ read_test_parameters(const std::string        &filename,
     f << text;
   }
   ContactDynamics::read_parameters(filename, prm);
+}
+
+// Runs a shipped parameter file (path relative to the repository) with some
+// entries replaced ({"Section/Entry", value}) and returns the columns of its
+// statistics.csv by name.
+// `inspect` sees the simulator at the end of the run.
+template <typename Simulator>
+std::map<std::string, std::vector<double>>
+run_shipped(const std::string                                      &file,
+            const std::vector<std::pair<std::string, std::string>> &changes,
+            const std::function<void(const Simulator &)> &inspect = {})
+{
+  dealii::ParameterHandler prm;
+  ContactDynamics::read_parameters(std::string(SOURCE_DIR) + "/../" + file,
+                                   prm);
+  std::string directory;
+  for (const auto &change : changes)
+    {
+      const auto sections =
+        dealii::Utilities::split_string_list(change.first, '/');
+      for (unsigned int i = 0; i + 1 < sections.size(); ++i)
+        prm.enter_subsection(sections[i]);
+      prm.set(sections.back(), change.second);
+      for (unsigned int i = 0; i + 1 < sections.size(); ++i)
+        prm.leave_subsection();
+      if (sections.back() == "Output directory")
+        directory = change.second;
+    }
+  AssertThrow(!directory.empty(),
+              dealii::ExcMessage("set Output/Output directory"));
+  std::ostringstream screen;
+  Simulator          simulator(prm, screen);
+  simulator.run();
+  if (inspect)
+    inspect(simulator);
+
+  std::ifstream                              in(directory + "/statistics.csv");
+  std::string                                line;
+  std::getline(in, line);
+  const auto names = dealii::Utilities::split_string_list(line, ',');
+  std::map<std::string, std::vector<double>> columns;
+  while (std::getline(in, line))
+    {
+      const auto values = dealii::Utilities::split_string_list(line, ',');
+      for (unsigned int i = 0; i < names.size() && i < values.size(); ++i)
+        columns[names[i]].push_back(std::stod(values[i]));
+    }
+  return columns;
+}
+
+// Time of the first row where column `name` is positive, or -1.
+inline double
+first_time_positive(const std::map<std::string, std::vector<double>> &columns,
+                    const std::string                                &name)
+{
+  const auto &values = columns.at(name);
+  for (unsigned int i = 0; i < values.size(); ++i)
+    if (values[i] > 0)
+      return columns.at("time")[i];
+  return -1;
 }
 
 #endif

@@ -1,0 +1,117 @@
+#!/usr/bin/env bash
+# Reruns the reference paper's two benchmarks (bouncing block, ironing) with
+# every variant, then writes the figures (doc/figures/benchmarks/*.png), the
+# tables (doc/benchmarks-tables.md) and benchmarks/results/paper_benchmarks.csv.
+#
+# Usage: benchmarks/paper_benchmarks.sh [-j JOBS] [--only bouncing_block|ironing]
+#                                       [--plots-only]
+#   -j JOBS       simulations run at the same time (default 1: wall times are
+#                 then those of an idle machine; -j 2 halves the total on 2
+#                 cores, but each run is slower)
+#   --only NAME   run one benchmark only (the plots use what output/ holds)
+#   --plots-only  run nothing, plot what output/ holds
+# Installs what is missing (as ./run.sh does, plus python3-numpy and
+# python3-matplotlib) and builds first. Each run writes output/<benchmark>_
+# <variant>/ with its screen log (run.log) and run_status.txt.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+jobs=1
+only=""
+plots_only=0
+while [ $# -gt 0 ]; do
+  case "$1" in
+    -j) jobs="$2"; shift 2 ;;
+    --only) only="$2"; shift 2 ;;
+    --plots-only) plots_only=1; shift ;;
+    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
+    *) echo "unknown argument '$1' (see --help)" >&2; exit 2 ;;
+  esac
+done
+case "$only" in ""|bouncing_block|ironing) ;;
+  *) echo "--only $only: allowed are bouncing_block and ironing" >&2; exit 2 ;;
+esac
+[[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "-j $jobs: a positive integer is needed" >&2; exit 2; }
+
+EXTRA_PACKAGES="python3-numpy python3-matplotlib" ./run.sh build
+
+# slowest first, so that parallel runs finish together
+variants=(ironing/nts_smoothed_friction ironing/nts_smoothed ironing/nts
+          ironing/mortar_friction ironing/mortar
+          bouncing_block/mortar_static bouncing_block/nts
+          bouncing_block/mortar_stabilized)
+selected=()
+for v in "${variants[@]}"; do
+  [ -z "$only" ] || [ "${v%%/*}" = "$only" ] && selected+=("$v")
+done
+
+entry() { # file, entry name -> value of 'set name = value'
+  sed -n "s|^ *set $2 *= *\(.*\)$|\1|p" "$1" | head -1
+}
+
+run_one() { # benchmark/variant
+  local prm="prm/$1.prm"
+  local dir
+  dir=$(entry "$prm" "Output directory")
+  rm -rf "$dir"
+  mkdir -p "$dir"
+  local start wall rc=0
+  start=$(date +%s.%N)
+  build/contact-dynamics "$prm" > "$dir/run.log" 2>&1 || rc=$?
+  wall=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN {printf "%.1f", b - a}')
+  local status=completed reason="reached the end time"
+  if [ $rc -ne 0 ]; then
+    status=stopped
+    reason=$(grep -v '^Step \|^ *$\|^-\+$\|^\*\+$' "$dir/run.log" | tail -3 | tr '\n' ' ' |
+             sed 's/  */ /g')
+  fi
+  {
+    echo "status = $status"
+    echo "reason = $reason"
+    echo "wall_time_s = $wall"
+    echo "exit_code = $rc"
+    echo "jobs = $jobs"
+  } > "$dir/run_status.txt"
+  printf '   done %-32s %-9s %7s s  %s\n' "$1" "$status" "$wall" \
+    "$([ $status = stopped ] && echo "($reason)")"
+}
+
+progress() { # one line per running variant: simulated time / end time
+  for v in "$@"; do
+    local prm="prm/$v.prm" dir
+    dir=$(entry "$prm" "Output directory")
+    local t
+    t=$(tail -1 "$dir/statistics.csv" 2>/dev/null | cut -d, -f2)
+    printf '   ... %-32s t = %s of %s\n' "$v" "${t:-0}" "$(entry "$prm" "End time")"
+  done
+}
+
+total_start=$(date +%s)
+if [ $plots_only -eq 0 ]; then
+  echo "== Running ${#selected[@]} simulations, $jobs at a time"
+  running=()
+  declare -A pid_of
+  for v in "${selected[@]}" ""; do
+    while [ ${#running[@]} -ge "$jobs" ] || { [ -z "$v" ] && [ ${#running[@]} -gt 0 ]; }; do
+      sleep 5
+      still=()
+      for r in "${running[@]}"; do
+        if kill -0 "${pid_of[$r]}" 2> /dev/null; then still+=("$r"); else wait "${pid_of[$r]}"; fi
+      done
+      running=("${still[@]+"${still[@]}"}")
+      if [ $(( ($(date +%s) - total_start) % 60 )) -lt 5 ] && [ ${#running[@]} -gt 0 ]; then
+        progress "${running[@]}"
+      fi
+    done
+    [ -z "$v" ] && break
+    echo "   start $v"
+    run_one "$v" &
+    pid_of[$v]=$!
+    running+=("$v")
+  done
+  echo "== Simulations took $(( $(date +%s) - total_start )) s in total"
+fi
+
+echo "== Figures and tables"
+python3 benchmarks/paper_benchmarks.py
+echo "== Done in $(( $(date +%s) - total_start )) s: doc/figures/benchmarks/, doc/benchmarks-tables.md"
