@@ -62,8 +62,11 @@ run_one() { # benchmark/variant
   local status=completed reason="reached the end time"
   if [ $rc -ne 0 ]; then
     status=stopped
-    reason=$(grep -v '^Step \|^ *$\|^-\+$\|^\*\+$' "$dir/run.log" | tail -3 | tr '\n' ' ' |
-             sed 's/  */ /g')
+    # the simulator's message, or the last lines of the log
+    local log
+    log=$(grep -v '^Step ' "$dir/run.log" | tr '\n' ' ' | sed 's/  */ /g')
+    reason=$(echo "$log" | sed -n 's/.*Error: \(.*\)\. The run stops here.*/\1/p')
+    [ -n "$reason" ] || reason=$(echo "$log" | tail -c 300)
   fi
   {
     echo "status = $status"
@@ -77,6 +80,7 @@ run_one() { # benchmark/variant
 }
 
 progress() { # one line per running variant: simulated time / end time
+  local v
   for v in "$@"; do
     local prm="prm/$v.prm" dir
     dir=$(entry "$prm" "Output directory")
@@ -90,6 +94,7 @@ total_start=$(date +%s)
 if [ $plots_only -eq 0 ]; then
   echo "== Running ${#selected[@]} simulations, $jobs at a time"
   running=()
+  next_report=$(( $(date +%s) + 60 ))
   declare -A pid_of
   for v in "${selected[@]}" ""; do
     while [ ${#running[@]} -ge "$jobs" ] || { [ -z "$v" ] && [ ${#running[@]} -gt 0 ]; }; do
@@ -99,8 +104,9 @@ if [ $plots_only -eq 0 ]; then
         if kill -0 "${pid_of[$r]}" 2> /dev/null; then still+=("$r"); else wait "${pid_of[$r]}"; fi
       done
       running=("${still[@]+"${still[@]}"}")
-      if [ $(( ($(date +%s) - total_start) % 60 )) -lt 5 ] && [ ${#running[@]} -gt 0 ]; then
+      if [ "$(date +%s)" -ge $next_report ] && [ ${#running[@]} -gt 0 ]; then
         progress "${running[@]}"
+        next_report=$(( $(date +%s) + 60 ))
       fi
     done
     [ -z "$v" ] && break

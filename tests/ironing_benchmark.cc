@@ -7,6 +7,9 @@
 //   = 0.008 s: contact starts in [0.04, 0.04 + 0.008 + dt].
 // - The energy balance closes once the contact work and the frictional
 //   dissipation are counted (to 1e-3 of the external work).
+// - The mortar run uses MUMPS and runs to t = 1: the contact couplings
+//   change the sparsity pattern as the tool slides, which once crashed
+//   MUMPS (at t = 0.98 on this mesh).
 // - Coulomb's law at every node at the end: |lambda_t| <= mu lambda_n, and
 //   the frictional dissipation never decreases.
 #include <contact_dynamics/contact/surface_contact.h>
@@ -29,11 +32,14 @@ main()
        {"mortar", "nts", "nts_smoothed", "mortar_friction",
         "nts_smoothed_friction"})
     {
-      double     coulomb = 0; // max of |lambda_t| - mu lambda_n
+      const bool   mumps    = variant == "mortar";
+      const double end_time = mumps ? 1.0 : 0.3;
+      double       coulomb  = 0; // max of |lambda_t| - mu lambda_n
       const auto s       = run_shipped<ContactDynamics::Simulator<2>>(
         "prm/ironing/" + variant + ".prm",
         {{"Scene/Refinement factor", "0.5"},
-         {"Time integration/End time", "0.3"},
+         {"Time integration/End time", std::to_string(end_time)},
+         {"Nonlinear solver/Linear solver", mumps ? "MUMPS" : "KLU"},
          {"Output/Output directory", "output_" + variant},
          {"Output/VTU interval", "0"}},
         [&](const ContactDynamics::Simulator<2> &simulator) {
@@ -49,7 +55,8 @@ main()
       const double t_c      = first_time_positive(s, "active_contact_nodes");
       const bool   friction = s.count("frictional_dissipation") > 0;
       deallog << variant << ": first contact at " << t_c << std::endl;
-      check_true(variant + ": ran to 0.3", std::abs(time.back() - 0.3) < 1e-9);
+      check_true(variant + ": ran to the end",
+                 std::abs(time.back() - end_time) < 1e-9);
       check_true(variant + ": first contact in [t_kin, t_kin + L/c + dt]",
                  t_c >= t_kin && t_c <= t_kin + transit + dt);
 
