@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace ContactDynamics
@@ -23,6 +24,16 @@ namespace ContactDynamics
                       Patterns::Double(0, 1),
                       "... or below this fraction of the residual at the "
                       "first iteration of the time step, in [0, 1).");
+    prm.declare_entry(
+      "Step tolerance",
+      "1e-12",
+      Patterns::Double(0, 1),
+      "... or, once the residual stagnates (it fell by less than half in "
+      "the last iteration), when the l2 norm of the last Newton update is "
+      "below this fraction of that of the iterate: the residual has then "
+      "reached its round-off level, which can lie above the absolute "
+      "tolerance for stiff bodies or tiny time steps. In [0, 1); 0 turns "
+      "the criterion off.");
     prm.declare_entry("Maximum iterations",
                       "25",
                       Patterns::Integer(1, 1000),
@@ -44,6 +55,7 @@ namespace ContactDynamics
   {
     absolute_tolerance = prm.get_double("Absolute tolerance");
     relative_tolerance = prm.get_double("Relative tolerance");
+    step_tolerance     = prm.get_double("Step tolerance");
     max_iterations     = prm.get_integer("Maximum iterations");
     linear_solver      = prm.get("Linear solver");
     verbose_           = prm.get_bool("Verbose");
@@ -71,6 +83,7 @@ namespace ContactDynamics
     if (structure_changed || !reuse)
       factorization_valid = false;
 
+    double previous_norm = 0, step_ratio = 0;
     for (unsigned int it = 0;; ++it)
       {
         const bool need_jacobian = !factorization_valid;
@@ -106,8 +119,13 @@ namespace ContactDynamics
             factorization_valid = false;
             return result;
           }
+        // round-off: the residual stopped falling and the update is tiny
+        const bool stagnated =
+          it > 0 && norm > 0.5 * previous_norm && step_ratio <= step_tolerance;
+        previous_norm = norm;
         if ((norm <= absolute_tolerance ||
-             norm <= relative_tolerance * result.initial_residual) &&
+             norm <= relative_tolerance * result.initial_residual ||
+             stagnated) &&
             system.converged())
           {
             result.converged = true;
@@ -151,6 +169,14 @@ namespace ContactDynamics
           }
         ++result.iterations;
         system.apply_update(increment);
+        const double iterate = system.iterate_norm();
+        step_ratio           = iterate > 0 ?
+                                 increment.l2_norm() / iterate :
+                                 std::numeric_limits<double>::infinity();
+        if (verbose_)
+          log << "              |du| / |u| = " << std::scientific
+              << std::setprecision(3) << step_ratio << std::defaultfloat
+              << std::endl;
       }
   }
 } // namespace ContactDynamics

@@ -16,9 +16,22 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <sstream>
 
 namespace ContactDynamics
 {
+  namespace
+  {
+    // 6 significant digits: std::to_string writes 1e-7 as 0.000000
+    std::string
+    number(const double x)
+    {
+      std::ostringstream out;
+      out << x;
+      return out.str();
+    }
+  } // namespace
+
   template <int dim>
   void
   Simulator<dim>::declare_parameters(ParameterHandler  &prm,
@@ -90,9 +103,9 @@ namespace ContactDynamics
     prm.leave_subsection();
     AssertThrow(minimum_time_step <= time_step,
                 ExcMessage("Time integration/Minimum time step = " +
-                           std::to_string(minimum_time_step) +
+                           number(minimum_time_step) +
                            " exceeds Time integration/Time step = " +
-                           std::to_string(time_step) + "."));
+                           number(time_step) + "."));
 
     prm.enter_subsection("Nonlinear solver");
     newton.parse_parameters(prm);
@@ -499,9 +512,9 @@ namespace ContactDynamics
     if (!failure.empty() || !result.converged)
       {
         structure_changed = true;
+        last_failure      = failure.empty() ? "no convergence" : failure;
         pcout << "  step to t = " << t_new << " with dt = " << dt
-              << " failed: " << (failure.empty() ? "no convergence" : failure)
-              << std::endl;
+              << " failed: " << last_failure << std::endl;
         return false;
       }
 
@@ -628,11 +641,12 @@ namespace ContactDynamics
             AssertThrow(
               dt >= minimum_time_step,
               ExcMessage(
-                "The time step would have to be cut to " + std::to_string(dt) +
-                " at t = " + std::to_string(time) +
+                "The time step would have to be cut to " + number(dt) +
+                " at t = " + number(time) +
                 ", below Time integration/Minimum time step = " +
-                std::to_string(minimum_time_step) +
-                ". The run stops here; statistics.csv and the VTU "
+                number(minimum_time_step) + " (the last attempt: " +
+                last_failure +
+                "). The run stops here; statistics.csv and the VTU "
                 "files in '" +
                 output_parameters.directory + "' hold every completed step."));
             pcout << "  cutting the time step to " << dt << std::endl;

@@ -94,12 +94,14 @@ read_test_parameters(const std::string        &filename,
 // Runs a shipped parameter file (path relative to the repository) with some
 // entries replaced ({"Section/Entry", value}) and returns the columns of its
 // statistics.csv by name.
-// `inspect` sees the simulator at the end of the run.
+// `inspect` sees the simulator at the end of the run. With `error`, a run
+// that stops with an exception returns what it wrote, and the message.
 template <typename Simulator>
 std::map<std::string, std::vector<double>>
 run_shipped(const std::string                                      &file,
             const std::vector<std::pair<std::string, std::string>> &changes,
-            const std::function<void(const Simulator &)> &inspect = {})
+            const std::function<void(const Simulator &)> &inspect = {},
+            std::string                                  *error   = nullptr)
 {
   dealii::ParameterHandler prm;
   ContactDynamics::read_parameters(std::string(SOURCE_DIR) + "/../" + file,
@@ -119,11 +121,20 @@ run_shipped(const std::string                                      &file,
     }
   AssertThrow(!directory.empty(),
               dealii::ExcMessage("set Output/Output directory"));
-  std::ostringstream screen;
-  Simulator          simulator(prm, screen);
-  simulator.run();
-  if (inspect)
-    inspect(simulator);
+  try
+    {
+      std::ostringstream screen;
+      Simulator          simulator(prm, screen);
+      simulator.run();
+      if (inspect)
+        inspect(simulator);
+    }
+  catch (const std::exception &e)
+    {
+      if (!error)
+        throw;
+      *error = e.what();
+    }
 
   std::ifstream                              in(directory + "/statistics.csv");
   std::string                                line;

@@ -49,6 +49,13 @@ namespace ContactDynamics
     {
       return true;
     }
+
+    /** l2 norm of the current iterate, for the step tolerance. */
+    virtual double
+    iterate_norm() const
+    {
+      return 0.;
+    }
   };
 
   class NewtonSolver
@@ -99,6 +106,7 @@ namespace ContactDynamics
   private:
     double       absolute_tolerance = 1e-10;
     double       relative_tolerance = 1e-10;
+    double       step_tolerance     = 1e-12;
     unsigned int max_iterations     = 20;
     std::string  linear_solver      = "KLU";
     bool         verbose_           = false;

@@ -150,6 +150,12 @@ namespace ContactDynamics
              MatrixType &jacobian) override;
     void
     apply_update(const VectorType &increment) override;
+
+    double
+    iterate_norm() const override
+    {
+      return u_new.l2_norm();
+    }
     bool
     jacobian_is_constant() const override;
 
@@ -203,6 +209,7 @@ namespace ContactDynamics
     unsigned int  cumulative_newton_iterations = 0;
     unsigned int  time_step_cuts               = 0;
     bool          structure_changed            = true;
+    std::string   last_failure; // why the last failed step failed
     EnergyBalance energies;
 
     std::unique_ptr<StatisticsFile>      statistics;
