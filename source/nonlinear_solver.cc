@@ -141,6 +141,10 @@ namespace ContactDynamics
 
         try
           {
+            std::unique_ptr<TimerOutput::Scope> scope;
+            if (timer)
+              scope = std::make_unique<TimerOutput::Scope>(*timer,
+                                                           "linear solve");
             if (need_jacobian)
               {
                 release_factorization();

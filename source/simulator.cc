@@ -109,6 +109,7 @@ namespace ContactDynamics
 
     prm.enter_subsection("Nonlinear solver");
     newton.parse_parameters(prm);
+    newton.set_timer(timer);
     prm.leave_subsection();
 
     prm.enter_subsection("Output");
@@ -386,10 +387,14 @@ namespace ContactDynamics
                            VectorType &residual_out,
                            MatrixType &jacobian_out)
   {
-    TimerOutput::Scope t(timer, "assembly");
     set_trial_velocity_and_acceleration();
-    if (contact && contact->update_candidates(u_new))
-      setup_sparsity();
+    if (contact)
+      {
+        TimerOutput::Scope t(timer, "contact search");
+        if (contact->update_candidates(u_new))
+          setup_sparsity();
+      }
+    TimerOutput::Scope t(timer, "bulk assembly");
     mechanics->assemble(u_new,
                         v_new,
                         a_new,
@@ -400,6 +405,7 @@ namespace ContactDynamics
                         residual_out,
                         jacobian_out,
                         residual_full);
+    t.stop();
     if (contact)
       {
         TimerOutput::Scope tc(timer, "contact assembly");

@@ -3,6 +3,7 @@
 #define contact_dynamics_nonlinear_solver_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
 
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -95,6 +96,13 @@ namespace ContactDynamics
       return verbose_;
     }
 
+    /** Times the factorizations and solves in the section "linear solve". */
+    void
+    set_timer(TimerOutput &timer)
+    {
+      this->timer = &timer;
+    }
+
     /**
      * Forget the factorization. Must be called before the Jacobian is
      * reinitialized with a new sparsity pattern: the direct solver keeps a
@@ -110,6 +118,7 @@ namespace ContactDynamics
     unsigned int max_iterations     = 20;
     std::string  linear_solver      = "KLU";
     bool         verbose_           = false;
+    TimerOutput *timer              = nullptr;
 
     std::unique_ptr<SolverControl>                  solver_control;
     std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
