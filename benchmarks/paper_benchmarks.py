@@ -173,7 +173,7 @@ def contact_spans(run, merge_gap):
     return merged, len(raw)
 
 
-def signal_analysis(t, y, t0, t1, args, dt):
+def signal_analysis(t, y, t0, t1, args, dt, f_mark=None):
     """Mean, dominant frequency, its amplitude and RMS deviation from trend of y on [t0, t1].
 
     y is resampled linearly onto a uniform grid of step dt, a linear trend is
@@ -181,7 +181,8 @@ def signal_analysis(t, y, t0, t1, args, dt):
     amplitude spectrum 2|FFT|/sum(window) taken. The dominant frequency is the
     largest amplitude at f >= --min-frequency; the spectrum only if the window
     is at least --min-window long. The trend for the RMS deviation is a centred
-    moving average over --trend-window."""
+    moving average over --trend-window. With f_mark, amp_mark is the largest
+    amplitude within 0.6 Hz of f_mark, in % of the mean."""
     out = dict(mean=math.nan, f_dom=math.nan, amp_rel=math.nan, rms_rel=math.nan, spectrum=None)
     t1 = min(t1, t[-1]) if len(t) else t0
     n = int(math.floor((t1 - t0) / dt + 1e-9)) + 1
@@ -207,6 +208,10 @@ def signal_analysis(t, y, t0, t1, args, dt):
     if len(valid):
         k = valid[np.argmax(amp[valid])]
         out.update(f_dom=f[k], amp_rel=100 * amp[k] / abs(mean))
+    if f_mark:
+        near = np.abs(f - f_mark) <= 0.6
+        if near.any():
+            out["amp_mark"] = 100 * amp[near].max() / abs(mean)
     out["spectrum"] = (f, amp)
     return out
 
@@ -346,7 +351,7 @@ def default_element_length(runs):
 
 def metrics(run, spans_merge_gap, signal):
     """The table numbers of one run; signal(run, spans) -> signal_analysis() dict or None."""
-    row = dict(variant=run.label, run=run.dir.name, status=run.status)
+    row = dict(variant=run.label, run=run.dir.name, status=run.short, reason=run.status)
     if not run.ok:
         return row
     t, ke = run.col("time"), run.col("kinetic_energy")
@@ -368,6 +373,12 @@ def metrics(run, spans_merge_gap, signal):
                cuts=int(run.col("time_step_cuts")[-1]), wall=run.wall)
     row.update(signal(run, spans) or {})
     return row
+
+
+def stop_notes(rows):
+    """A footnote per stopped variant with the simulator's reason."""
+    return [f"{r['variant']}: {r['reason']}." for r in rows
+            if r.get("reason") and r["reason"] != r["status"]]
 
 
 def fmt(value, spec):
@@ -403,8 +414,9 @@ def columns(unit, bouncing):
     return cols + [("newton", "Newton iterations", "d"), ("newton_per_step", "Newton/step", ".3g"),
                    ("cuts", "step cuts", "d"), ("wall", "wall time (s)", ".4g"),
                    ("mean", f"mean {signal}", ".4g"), ("f_dom", "dominant f (Hz)", ".4g"),
-                   ("amp_rel", "amplitude (% of mean)", ".3g"),
-                   ("rms_rel", "RMS dev. from trend (% of mean)", ".3g")]
+                   ("amp_rel", "amplitude (% of mean)", ".3g")] + \
+        ([] if bouncing else [("amp_mark", "amplitude at element passage (% of mean)", ".3g")]) + \
+        [("rms_rel", "RMS dev. from trend (% of mean)", ".3g")]
 
 
 def common_notes(args):
@@ -467,7 +479,8 @@ def main():
     # Ironing: the signal is the monitored node's pressure from --window-start on.
     def ir_signal(run, spans):
         history = run.history()
-        return history and signal_analysis(*history, args.window_start, math.inf, args, dt)
+        return history and signal_analysis(*history, args.window_start, math.inf, args, dt,
+                                           f_pass)
 
     bb = runs["bouncing_block"]
     bb_rows = [metrics(r, args.merge_gap, bb_signal) for r in bb]
@@ -491,13 +504,14 @@ def main():
             "second contact are merged spans); 'raw' counts them unmerged.",
             "Signal: total contact force F_y (N/m) in the run's first (merged) contact span, "
             "resampled at the base step 0.025 s (Nyquist 20 Hz).",
-            "Max contact work > 0: energy created by the contact forces."]),
+            "Max contact work > 0: energy created by the contact forces."] + stop_notes(bb_rows)),
         table(ir_rows, columns("", False), "Ironing (paper section 5.2)", notes + [
             f"Signal: contact pressure of the monitored tool node (contact_history.csv) from "
             f"t = {args.window_start:g} s to the end of the run; resampled at dt = {dt:g} "
             f"(Nyquist {0.5 / dt:g} Hz). Element-passage frequency = sliding speed "
             f"{args.sliding_speed:g} / primary element length {h:.4g} = {f_pass:.4g} Hz.",
-            "Energies are in the problem's consistent (non-dimensional) units."])])
+            "Energies are in the problem's consistent (non-dimensional) units."]
+            + stop_notes(ir_rows))])
     args.tables.parent.mkdir(parents=True, exist_ok=True)
     args.tables.write_text(text)
     print(f"writing tables {args.tables}\n\n{text}")
