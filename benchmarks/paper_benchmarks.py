@@ -485,14 +485,17 @@ def main():
     bb = runs["bouncing_block"]
     bb_rows = [metrics(r, args.merge_gap, bb_signal) for r in bb]
     ref_spans = contact_spans(bb[0], args.merge_gap)[0] if bb[0].ok else []
-    bouncing_block_figures(bb, args.figures, args, ref_spans)
+    # a benchmark without any run keeps its figures (e.g. after --only)
+    if any(r.ok for r in bb):
+        bouncing_block_figures(bb, args.figures, args, ref_spans)
 
     ir = runs["ironing"]
     dt = spectrum_dt(ir, args)
     h = args.element_length or default_element_length(ir)
     f_pass = args.sliding_speed / h
     ir_rows = [metrics(r, args.merge_gap, ir_signal) for r in ir]
-    ironing_figures(ir, args.figures, args, dict(zip([r.key for r in ir], ir_rows)), f_pass)
+    if any(r.ok for r in ir):
+        ironing_figures(ir, args.figures, args, dict(zip([r.key for r in ir], ir_rows)), f_pass)
 
     notes = common_notes(args)
     text = "\n".join([
