@@ -36,6 +36,15 @@ namespace ContactDynamics
                       "Coulomb friction coefficient mu >= 0 of each pair, "
                       "separated by ';' in the order of 'Pairs', or one value "
                       "for all. 0 = frictionless (no tangential unknowns).");
+    prm.declare_entry(
+      "Initial penetration",
+      "stop",
+      Patterns::Selection("stop|allow"),
+      "Bodies that overlap at t = 0 (by more than the capture tolerance): "
+      "'stop' ends the run with a message that says where; 'allow' warns "
+      "and lets the contact push them apart in the first steps, which "
+      "creates energy (reported in contact_work and the energy balance "
+      "error).");
     prm.declare_entry("Monitored points",
                       "",
                       Patterns::Anything(),
@@ -117,6 +126,7 @@ namespace ContactDynamics
                 ExcMessage("Contact/Formulation = " + formulation +
                            " needs at least one pair in 'Contact/Pairs'."));
 
+    allow_initial_penetration = prm.get("Initial penetration") == "allow";
     monitored_points.clear();
     for (const auto &text :
          Utilities::split_string_list(prm.get("Monitored points"), ';'))

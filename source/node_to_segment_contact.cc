@@ -66,10 +66,9 @@ namespace ContactDynamics
 
   template <int dim>
   double
-  NodeToSegmentContact<dim>::traction_per_multiplier(
-    const PairData    &pair,
-    const unsigned int node,
-    const VectorType  &u) const
+  NodeToSegmentContact<dim>::traction_per_multiplier(const PairData    &pair,
+                                                     const unsigned int node,
+                                                     const VectorType  &u) const
   {
     double current = 0;
     for (const unsigned int face : pair.secondary.node_faces[node])

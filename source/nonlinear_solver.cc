@@ -143,8 +143,8 @@ namespace ContactDynamics
           {
             std::unique_ptr<TimerOutput::Scope> scope;
             if (timer)
-              scope = std::make_unique<TimerOutput::Scope>(*timer,
-                                                           "linear solve");
+              scope =
+                std::make_unique<TimerOutput::Scope>(*timer, "linear solve");
             if (need_jacobian)
               {
                 release_factorization();
@@ -174,9 +174,8 @@ namespace ContactDynamics
         ++result.iterations;
         system.apply_update(increment);
         const double iterate = system.iterate_norm();
-        step_ratio           = iterate > 0 ?
-                                 increment.l2_norm() / iterate :
-                                 std::numeric_limits<double>::infinity();
+        step_ratio           = iterate > 0 ? increment.l2_norm() / iterate :
+                                             std::numeric_limits<double>::infinity();
         if (verbose_)
           log << "              |du| / |u| = " << std::scientific
               << std::setprecision(3) << step_ratio << std::defaultfloat

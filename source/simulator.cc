@@ -314,6 +314,22 @@ namespace ContactDynamics
                 ExcMessage("The initial acceleration is not finite: check "
                            "that the Dirichlet expressions are smooth at "
                            "t = 0 and that every body is held or free."));
+    if (contact)
+      {
+        // gaps at the initial state: overlapping bodies stop the run here
+        if (contact->update_candidates(u))
+          setup_sparsity();
+        VectorType contact_residual(residual), contact_full(residual_full_old);
+        contact->assemble(
+          TrialState{u, v, 0., time_step, integrator.is_dynamic()},
+          increment_constraints,
+          false,
+          contact_residual,
+          jacobian,
+          contact_full);
+        contact->check_initial_state(pcout.get_stream());
+      }
+
     energies = EnergyBalance();
     energies.kinetic =
       integrator.is_dynamic() ? mechanics->kinetic_energy(v) : 0.;
@@ -644,17 +660,17 @@ namespace ContactDynamics
             ++time_step_cuts;
             good_since_cut = 0;
             dt             = dt_try / 2;
-            AssertThrow(
-              dt >= minimum_time_step,
-              ExcMessage(
-                "The time step would have to be cut to " + number(dt) +
-                " at t = " + number(time) +
-                ", below Time integration/Minimum time step = " +
-                number(minimum_time_step) + " (the last attempt: " +
-                last_failure +
-                "). The run stops here; statistics.csv and the VTU "
-                "files in '" +
-                output_parameters.directory + "' hold every completed step."));
+            AssertThrow(dt >= minimum_time_step,
+                        ExcMessage(
+                          "The time step would have to be cut to " +
+                          number(dt) + " at t = " + number(time) +
+                          ", below Time integration/Minimum time step = " +
+                          number(minimum_time_step) +
+                          " (the last attempt: " + last_failure +
+                          "). The run stops here; statistics.csv and the VTU "
+                          "files in '" +
+                          output_parameters.directory +
+                          "' hold every completed step."));
             pcout << "  cutting the time step to " << dt << std::endl;
           }
       }

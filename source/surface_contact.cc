@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <iomanip>
 #include <set>
+#include <sstream>
 
 namespace ContactDynamics
 {
@@ -412,8 +413,8 @@ namespace ContactDynamics
             const double scale  = pair.secondary.reference_weight[j];
             const double lambda = state.u(row);
             node.pressure = lambda * traction_per_multiplier(pair, j, state.u);
-            node.gap            = pair.gap[j].value;
-            node.weight         = pair.weight[j].value;
+            node.gap      = pair.gap[j].value;
+            node.weight   = pair.weight[j].value;
             // a mortar node needs more than half its support covered: on a
             // sliver the dual function can be negative and turn a clear gap
             // into a weighted penetration
@@ -594,6 +595,41 @@ namespace ContactDynamics
                 << node.stick << '\n';
           }
       }
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::check_initial_state(std::ostream &log) const
+  {
+    double       worst = 0;
+    unsigned int pair = 0, node = 0;
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      for (unsigned int j = 0; j < pairs[p].nodes.size(); ++j)
+        if (-pairs[p].nodes[j].normalized_gap() > worst)
+          {
+            worst = -pairs[p].nodes[j].normalized_gap();
+            pair  = p;
+            node  = j;
+          }
+    if (worst <= complementarity.capture_tolerance)
+      return;
+    std::ostringstream where;
+    where << "The bodies overlap at t = 0 by up to " << worst << " (pair '"
+          << contact.pairs[pair].name << "', secondary node at ("
+          << pairs[pair].secondary.reference[node][0] << ", "
+          << pairs[pair].secondary.reference[node][1]
+          << ") in the reference configuration; Capture tolerance = "
+          << complementarity.capture_tolerance << ")";
+    AssertThrow(contact.allow_initial_penetration,
+                ExcMessage(where.str() +
+                           ". Pushing them apart would create energy. Move "
+                           "them apart (Body <name>/Initial displacement, "
+                           "the mesh), or set Contact/Initial penetration = "
+                           "allow to let the contact push them apart."));
+    log << "Warning: " << where.str()
+        << "; Contact/Initial penetration = allow: the contact pushes them "
+           "apart, and the energy this creates appears in contact_work."
+        << std::endl;
   }
 
   template class SurfaceContact<2>;

@@ -26,7 +26,7 @@ main()
 {
   initlog();
   const double dt = 0.025, t_kin = 2 / M_PI * std::acos(0.95),
-               transit = 1 / std::sqrt(1e6 / 7750),
+               transit  = 1 / std::sqrt(1e6 / 7750),
                ke_rigid = 0.5 * 7750 * std::pow(0.1 * M_PI, 2);
   for (const std::string variant :
        {"mortar_stabilized", "mortar_static", "nts"})
@@ -39,7 +39,8 @@ main()
       const auto  &time = s.at("time");
       const double t_c  = first_time_positive(s, "active_contact_nodes");
       deallog << variant << ": first contact at " << t_c << " s" << std::endl;
-      check_true(variant + ": ran to 3.6 s", std::abs(time.back() - 3.6) < 1e-9);
+      check_true(variant + ": ran to 3.6 s",
+                 std::abs(time.back() - 3.6) < 1e-9);
       check_true(variant + ": first contact in [t_kin, t_kin + L/c + dt]",
                  t_c >= t_kin && t_c <= t_kin + transit + dt);
 
@@ -47,16 +48,16 @@ main()
       for (unsigned int i = 0; i < time.size(); ++i)
         {
           ke_max = std::max(ke_max, s.at("kinetic_energy")[i]);
-          e_max  = std::max(e_max,
-                           s.at("kinetic_energy")[i] +
-                             s.at("elastic_energy")[i]);
+          e_max =
+            std::max(e_max,
+                     s.at("kinetic_energy")[i] + s.at("elastic_energy")[i]);
           balance = std::max(balance,
                              std::abs(s.at("energy_balance_error")[i] -
                                       s.at("contact_work")[i]));
           if (i > 0)
-            work_step = std::max(work_step,
-                                 s.at("contact_work")[i] -
-                                   s.at("contact_work")[i - 1]);
+            work_step =
+              std::max(work_step,
+                       s.at("contact_work")[i] - s.at("contact_work")[i - 1]);
         }
       check_true(variant + ": no NaN", std::isfinite(e_max + balance));
       check_true(variant + ": kinetic energy below the rigid bound",

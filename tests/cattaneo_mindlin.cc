@@ -65,8 +65,9 @@ end
   ContactDynamics::Simulator<2> simulator(prm, screen);
   simulator.run();
 
-  const auto *contact = dynamic_cast<const ContactDynamics::SurfaceContact<2> *>(
-    simulator.get_contact());
+  const auto *contact =
+    dynamic_cast<const ContactDynamics::SurfaceContact<2> *>(
+      simulator.get_contact());
   const auto   stats = contact->statistics();
   const double P = stats[2], Q = std::abs(stats[1]), mu = 0.3;
   const double E_star = 1000 / (2 * (1 - 0.3 * 0.3));
@@ -83,13 +84,13 @@ end
         moment +=
           nodes[j].pressure * surface.position(j, simulator.displacement())[0];
       }
-  const double centre = moment / sum;
+  const double centre      = moment / sum;
   double       outer_stick = 0, inner_slip = 1e300;
   for (unsigned int j = 0; j < nodes.size(); ++j)
     if (nodes[j].active)
       {
-        const double r = std::abs(
-          surface.position(j, simulator.displacement())[0] - centre);
+        const double r =
+          std::abs(surface.position(j, simulator.displacement())[0] - centre);
         if (nodes[j].stick)
           outer_stick = std::max(outer_stick, r);
         else
@@ -102,6 +103,6 @@ end
   const double measured = (outer_stick + inner_slip) / 2;
   check_close("stick zone half-width / exact", measured / c, 1., 0.08);
   deallog << std::setprecision(2)
-          << "stick zone half-width error: " << 100 * (measured / c - 1)
-          << " %" << std::endl;
+          << "stick zone half-width error: " << 100 * (measured / c - 1) << " %"
+          << std::endl;
 }

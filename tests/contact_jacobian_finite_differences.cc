@@ -64,6 +64,8 @@ subsection Contact
   set Formulation = )" +
            formulation + R"(
   set Pairs = upper_bottom: lower_top
+  # the states are penetrating on purpose: derivatives in contact
+  set Initial penetration = allow
   set Friction coefficients = )" +
            friction + R"(
   subsection Mortar

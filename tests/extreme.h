@@ -17,6 +17,8 @@ struct ExtremeCase
   std::string                                      file; // shipped .prm
   std::vector<std::pair<std::string, std::string>> changes;
   double                                           end_time;
+  // the entry a stop message must name
+  std::string expected_entry = "Minimum time step";
 };
 
 // Energy created beyond the external work may be at most this fraction of
@@ -45,14 +47,14 @@ check_extreme_case(const ExtremeCase &c)
   for (const auto &column : s)
     for (const double v : column.second)
       finite = finite && std::isfinite(v);
-  const auto        &time  = s.at("time");
-  const unsigned int n     = time.size();
-  const double       e0    = s.at("kinetic_energy")[0] + s.at("elastic_energy")[0];
-  double             scale = e0, excess = 0;
+  const std::vector<double> none;
+  const auto               &time  = s.count("time") ? s.at("time") : none;
+  const unsigned int        n     = time.size();
+  double                    scale = 0, excess = 0;
   for (unsigned int i = 0; i < n; ++i)
     {
-      scale  = std::max(scale,
-                       s.at("kinetic_energy")[i] + s.at("elastic_energy")[i]);
+      scale =
+        std::max(scale, s.at("kinetic_energy")[i] + s.at("elastic_energy")[i]);
       excess = std::max(excess, s.at("energy_balance_error")[i]);
     }
   const bool completed = error.empty();
@@ -69,18 +71,24 @@ check_extreme_case(const ExtremeCase &c)
     }
   else
     {
-      check_true(c.name + ": the message names the entry and the output",
-                 error.find("Minimum time step") != std::string::npos &&
-                   error.find("statistics.csv") != std::string::npos);
-      check_true(c.name + ": the completed steps are on disk", n >= 1);
+      check_true(c.name + ": the message names " + c.expected_entry,
+                 error.find(c.expected_entry) != std::string::npos);
+      // a stop after the first step keeps what was computed
+      if (c.expected_entry == "Minimum time step")
+        check_true(c.name + ": the completed steps are on disk",
+                   n >= 1 && error.find("statistics.csv") != std::string::npos);
     }
   std::ofstream out("outcomes.csv", std::ios::app);
   out << '"' << c.name << "\"," << (completed ? "completed" : "stopped") << ','
-      << time.back() << ',' << s.at("step").back() << ','
-      << s.at("time_step_cuts").back() << ',' << excess / scale << ",\"";
-  const auto start = error.find("The time step");
+      << (n ? time.back() : 0.) << ',' << (n ? s.at("step").back() : 0.) << ','
+      << (n ? s.at("time_step_cuts").back() : 0.) << ','
+      << (scale > 0 ? excess / scale : 0.) << ",\"";
+  auto start = error.find("The time step");
+  if (start == std::string::npos)
+    start = error.find("The bodies");
   if (start != std::string::npos)
-    out << dealii::Utilities::trim(error.substr(start, error.find(". The run", start) - start));
+    out << dealii::Utilities::trim(
+      error.substr(start, error.find(". ", start) - start));
   out << "\"\n";
 }
 

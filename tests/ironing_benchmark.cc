@@ -28,28 +28,30 @@ main()
   initlog();
   const double dt = 0.01, t_kin = 0.02 / 0.5,
                transit = 2 / std::sqrt(6896 / 0.1);
-  for (const std::string variant :
-       {"mortar", "nts", "nts_smoothed", "mortar_friction",
-        "nts_smoothed_friction"})
+  for (const std::string variant : {"mortar",
+                                    "nts",
+                                    "nts_smoothed",
+                                    "mortar_friction",
+                                    "nts_smoothed_friction"})
     {
       const bool   mumps    = variant == "mortar";
       const double end_time = mumps ? 1.0 : 0.3;
       double       coulomb  = 0; // max of |lambda_t| - mu lambda_n
-      const auto s       = run_shipped<ContactDynamics::Simulator<2>>(
+      const auto   s        = run_shipped<ContactDynamics::Simulator<2>>(
         "prm/ironing/" + variant + ".prm",
         {{"Scene/Refinement factor", "0.5"},
-         {"Time integration/End time", std::to_string(end_time)},
-         {"Nonlinear solver/Linear solver", mumps ? "MUMPS" : "KLU"},
-         {"Output/Output directory", "output_" + variant},
-         {"Output/VTU interval", "0"}},
+                  {"Time integration/End time", std::to_string(end_time)},
+                  {"Nonlinear solver/Linear solver", mumps ? "MUMPS" : "KLU"},
+                  {"Output/Output directory", "output_" + variant},
+                  {"Output/VTU interval", "0"}},
         [&](const ContactDynamics::Simulator<2> &simulator) {
           const auto *contact =
             dynamic_cast<const ContactDynamics::SurfaceContact<2> *>(
               simulator.get_contact());
           for (const auto &node : contact->node_states(0))
-            coulomb = std::max(coulomb,
-                               std::abs(node.tangential) -
-                                 0.25 * node.pressure);
+            coulomb =
+              std::max(coulomb,
+                       std::abs(node.tangential) - 0.25 * node.pressure);
         });
       const auto  &time     = s.at("time");
       const double t_c      = first_time_positive(s, "active_contact_nodes");
@@ -78,7 +80,8 @@ main()
       if (friction)
         {
           check_true(variant + ": |lambda_t| <= mu lambda_n at every node",
-                     coulomb <= 1e-6 * std::abs(s.at("contact_force_y").back()));
+                     coulomb <=
+                       1e-6 * std::abs(s.at("contact_force_y").back()));
           check_true(variant + ": dissipation never decreases",
                      dissipation_drop <= 0);
         }

@@ -244,6 +244,7 @@ end
 subsection Contact
   set Formulation = mortar
   set Pairs = cylinder_arc: block_top
+  set Initial penetration = allow
 end
 subsection Output
   set Output directory = output_curved

@@ -136,8 +136,8 @@ run_shipped(const std::string                                      &file,
       *error = e.what();
     }
 
-  std::ifstream                              in(directory + "/statistics.csv");
-  std::string                                line;
+  std::ifstream in(directory + "/statistics.csv");
+  std::string   line;
   std::getline(in, line);
   const auto names = dealii::Utilities::split_string_list(line, ',');
   std::map<std::string, std::vector<double>> columns;

@@ -39,6 +39,7 @@ namespace ContactDynamics
     std::string              formulation = "none";
     std::vector<ContactPair> pairs;
     std::vector<Point<2>>    monitored_points;
+    bool                     allow_initial_penetration = false;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -126,6 +127,16 @@ namespace ContactDynamics
     nodal_output_fields() const
     {
       return {};
+    }
+
+    /**
+     * Called after an assemble() at the initial state: bodies that overlap
+     * stop the run with a message (or, if allowed, get a warning on `log`).
+     */
+    virtual void
+    check_initial_state(std::ostream &log) const
+    {
+      (void)log;
     }
 
     /** Energy dissipated by the contact so far (friction). */

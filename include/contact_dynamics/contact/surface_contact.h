@@ -110,6 +110,9 @@ namespace ContactDynamics
       return frictional_dissipation;
     }
 
+    void
+    check_initial_state(std::ostream &log) const override;
+
     std::vector<std::pair<const VectorType *, std::string>>
     nodal_output_fields() const override
     {
