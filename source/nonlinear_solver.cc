@@ -34,6 +34,16 @@ namespace ContactDynamics
       "reached its round-off level, which can lie above the absolute "
       "tolerance for stiff bodies or tiny time steps. In [0, 1); 0 turns "
       "the criterion off.");
+    prm.declare_entry(
+      "Cycle damping",
+      "true",
+      Patterns::Bool(),
+      "Semi-smooth Newton can cycle between two active sets (stick and "
+      "slip, contact and no contact): the residual then repeats every other "
+      "iteration. When it does (to 0.1 %), the updates are halved (down to "
+      "1/16) until the residual halves, then full steps resume. Converging "
+      "iterations never trigger it. Without it, ironing with mu = 1 stops "
+      "after first contact (doc/extreme-cases.md).");
     prm.declare_entry("Maximum iterations",
                       "25",
                       Patterns::Integer(1, 1000),
@@ -56,6 +66,7 @@ namespace ContactDynamics
     absolute_tolerance = prm.get_double("Absolute tolerance");
     relative_tolerance = prm.get_double("Relative tolerance");
     step_tolerance     = prm.get_double("Step tolerance");
+    cycle_damping      = prm.get_bool("Cycle damping");
     max_iterations     = prm.get_integer("Maximum iterations");
     linear_solver      = prm.get("Linear solver");
     verbose_           = prm.get_bool("Verbose");
@@ -84,6 +95,10 @@ namespace ContactDynamics
       factorization_valid = false;
 
     double previous_norm = 0, step_ratio = 0;
+    // semi-smooth Newton can cycle between two active sets (stick and slip,
+    // say): the residual then repeats every other iteration; damped
+    // updates break the cycle
+    double older_norm = -1, damping = 1;
     for (unsigned int it = 0;; ++it)
       {
         const bool need_jacobian = !factorization_valid;
@@ -122,6 +137,18 @@ namespace ContactDynamics
         // round-off: the residual stopped falling and the update is tiny
         const bool stagnated =
           it > 0 && norm > 0.5 * previous_norm && step_ratio <= step_tolerance;
+        if (damping < 1 && norm < 0.5 * previous_norm)
+          damping = 1; // out of the cycle: full Newton steps again
+        else if (cycle_damping && it > 1 &&
+                 std::abs(norm - older_norm) <= 1e-3 * norm &&
+                 std::abs(norm - previous_norm) > 1e-2 * norm)
+          {
+            damping = std::max(damping / 2, 1. / 16);
+            if (verbose_)
+              log << "    (cycle detected: damping " << damping << ")"
+                  << std::endl;
+          }
+        older_norm    = previous_norm;
         previous_norm = norm;
         if ((norm <= absolute_tolerance ||
              norm <= relative_tolerance * result.initial_residual ||
@@ -172,6 +199,8 @@ namespace ContactDynamics
             return result;
           }
         ++result.iterations;
+        if (damping < 1)
+          increment *= damping;
         system.apply_update(increment);
         const double iterate = system.iterate_norm();
         step_ratio           = iterate > 0 ? increment.l2_norm() / iterate :

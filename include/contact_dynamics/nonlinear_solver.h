@@ -115,6 +115,7 @@ namespace ContactDynamics
     double       absolute_tolerance = 1e-10;
     double       relative_tolerance = 1e-10;
     double       step_tolerance     = 1e-12;
+    bool         cycle_damping      = true;
     unsigned int max_iterations     = 20;
     std::string  linear_solver      = "KLU";
     bool         verbose_           = false;
