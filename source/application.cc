@@ -2,9 +2,11 @@
 #include <deal.II/base/mpi.h>
 
 #include <contact_dynamics/application.h>
+#include <contact_dynamics/parallel.h>
 #include <contact_dynamics/scene.h>
 #include <contact_dynamics/simulator.h>
 
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -39,19 +41,39 @@ namespace ContactDynamics
         std::ostream      &screen,
         const bool         validate_only)
     {
-      Simulator<dim> simulator(prm, screen);
-      if (validate_only)
-        {
-          screen << filename << ": the parameters are valid." << std::endl;
-          return;
-        }
-      prm.enter_subsection("Output");
-      const std::string directory = prm.get("Output directory");
-      prm.leave_subsection();
-      std::filesystem::create_directories(directory);
-      std::ofstream used(directory + "/parameters.prm");
-      prm.print_parameters(used, ParameterHandler::ShortPRM);
-      simulator.run();
+      // a run that stops destroys the simulator before the error leaves
+      // here: its TimerOutput then has nothing to say about an uncaught
+      // exception
+      std::exception_ptr failure;
+      {
+        Simulator<dim> simulator(prm, screen);
+        if (validate_only)
+          {
+            if (is_root(MPI_COMM_WORLD))
+              screen << filename << ": the parameters are valid." << std::endl;
+            return;
+          }
+        prm.enter_subsection("Output");
+        const std::string directory = prm.get("Output directory");
+        prm.leave_subsection();
+        if (is_root(MPI_COMM_WORLD))
+          {
+            std::filesystem::create_directories(directory);
+            std::ofstream used(directory + "/parameters.prm");
+            prm.print_parameters(used, ParameterHandler::ShortPRM);
+          }
+        MPI_Barrier(MPI_COMM_WORLD);
+        try
+          {
+            simulator.run();
+          }
+        catch (...)
+          {
+            failure = std::current_exception();
+          }
+      }
+      if (failure)
+        std::rethrow_exception(failure);
     }
   } // namespace
 
@@ -135,10 +157,6 @@ namespace ContactDynamics
     try
       {
         const std::vector<std::string> args(argv + 1, argv + argc);
-        AssertThrow(Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1,
-                    ExcMessage("This version runs on one MPI process only "
-                               "(parallel runs are planned); run it without "
-                               "mpirun or with 'mpirun -np 1'."));
         if (args.empty() || args[0] == "--help" || args[0] == "-h")
           {
             if (root)

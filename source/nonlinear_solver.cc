@@ -49,11 +49,32 @@ namespace ContactDynamics
                       Patterns::Integer(1, 1000),
                       "Newton iterations (linear solves) allowed per time "
                       "step before the step is cut, in [1, 1000].");
-    prm.declare_entry("Linear solver",
-                      "KLU",
-                      Patterns::Selection("KLU|MUMPS"),
-                      "Sparse direct solver (Trilinos Amesos): KLU (serial, "
-                      "fast for small 2-D problems) or MUMPS.");
+    prm.declare_entry(
+      "Linear solver",
+      "KLU",
+      Patterns::Selection("KLU|MUMPS|GMRES"),
+      "KLU and MUMPS are sparse direct solvers (Trilinos Amesos). KLU "
+      "factorizes on one process (with mpirun the matrix is gathered there): "
+      "fastest for the 2-D scenes of the paper. MUMPS factorizes in parallel. "
+      "GMRES is iterative, preconditioned by additive Schwarz with an exact "
+      "(KLU) solve of each process's block: the blocks keep the saddle-point "
+      "structure of the contact rows intact, which incomplete factorizations "
+      "and AMG do not handle; on one process it is a direct solve. See "
+      "doc/parallel.md for what each costs.");
+    prm.declare_entry("Linear tolerance",
+                      "1e-6",
+                      Patterns::Double(1e-300, 1),
+                      "GMRES: solve to this fraction of the residual norm, "
+                      "in (0, 1). Newton still converges to its own "
+                      "tolerances (an inexact Newton method), only with more "
+                      "iterations when this is large. Contact makes the "
+                      "system ill-conditioned: below about 1e-8 GMRES can "
+                      "fail with a loss of precision.");
+    prm.declare_entry("Maximum linear iterations",
+                      "1000",
+                      Patterns::Integer(1),
+                      "GMRES: iterations (restarted every 100) before the "
+                      "solve counts as failed and the time step is cut.");
     prm.declare_entry("Verbose",
                       "false",
                       Patterns::Bool(),
@@ -63,13 +84,15 @@ namespace ContactDynamics
   void
   NewtonSolver::parse_parameters(ParameterHandler &prm)
   {
-    absolute_tolerance = prm.get_double("Absolute tolerance");
-    relative_tolerance = prm.get_double("Relative tolerance");
-    step_tolerance     = prm.get_double("Step tolerance");
-    cycle_damping      = prm.get_bool("Cycle damping");
-    max_iterations     = prm.get_integer("Maximum iterations");
-    linear_solver      = prm.get("Linear solver");
-    verbose_           = prm.get_bool("Verbose");
+    absolute_tolerance    = prm.get_double("Absolute tolerance");
+    relative_tolerance    = prm.get_double("Relative tolerance");
+    step_tolerance        = prm.get_double("Step tolerance");
+    cycle_damping         = prm.get_bool("Cycle damping");
+    max_iterations        = prm.get_integer("Maximum iterations");
+    linear_solver         = prm.get("Linear solver");
+    linear_tolerance      = prm.get_double("Linear tolerance");
+    max_linear_iterations = prm.get_integer("Maximum linear iterations");
+    verbose_              = prm.get_bool("Verbose");
   }
 
   void
@@ -78,6 +101,7 @@ namespace ContactDynamics
     // the solver refers to its control, so it goes first
     direct_solver.reset();
     solver_control.reset();
+    preconditioner.reset();
     factorization_valid = false;
   }
 
@@ -172,7 +196,29 @@ namespace ContactDynamics
             if (timer)
               scope =
                 std::make_unique<TimerOutput::Scope>(*timer, "linear solve");
-            if (need_jacobian)
+            if (linear_solver == "GMRES")
+              {
+                if (need_jacobian)
+                  {
+                    release_factorization();
+                    preconditioner = std::make_unique<
+                      TrilinosWrappers::PreconditionBlockwiseDirect>();
+                    preconditioner->initialize(jacobian);
+                    factorization_valid = reuse;
+                  }
+                residual *= -1.;
+                SolverControl                 control(max_linear_iterations,
+                                      linear_tolerance * norm,
+                                      false,
+                                      false);
+                TrilinosWrappers::SolverGMRES gmres(
+                  control,
+                  TrilinosWrappers::SolverGMRES::AdditionalData(verbose_, 100));
+                increment = 0;
+                gmres.solve(jacobian, increment, residual, *preconditioner);
+                result.linear_iterations += control.last_step();
+              }
+            else if (need_jacobian)
               {
                 release_factorization();
                 solver_control =
@@ -188,8 +234,11 @@ namespace ContactDynamics
                 factorization_valid = reuse;
               }
             // Newton: J du = -R
-            residual *= -1.;
-            direct_solver->solve(increment, residual);
+            if (linear_solver != "GMRES")
+              {
+                residual *= -1.;
+                direct_solver->solve(increment, residual);
+              }
           }
         catch (const std::exception &e)
           {

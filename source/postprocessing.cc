@@ -4,6 +4,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <contact_dynamics/parallel.h>
 #include <contact_dynamics/postprocessing.h>
 
 #include <cmath>
@@ -170,9 +171,11 @@ namespace ContactDynamics
 
   template <int dim>
   SolutionWriter<dim>::SolutionWriter(
+    const MPI_Comm                  comm,
     const std::string              &directory,
     const std::vector<std::string> &extra_names)
-    : directory(directory)
+    : comm(comm)
+    , directory(directory)
     , extra_names(extra_names)
   {}
 
@@ -226,13 +229,29 @@ namespace ContactDynamics
     data_out.add_data_vector(material_id, "material_id");
     data_out.build_patches();
 
-    const std::string name =
-      "solution-" + Utilities::int_to_string(step, 5) + ".vtu";
-    std::ofstream out(directory + "/" + name);
+    const unsigned int n_processes = Utilities::MPI::n_mpi_processes(comm);
+    const std::string  base  = "solution-" + Utilities::int_to_string(step, 5);
+    const auto         piece = [&](const unsigned int p) {
+      return n_processes == 1 ? base + ".vtu" :
+                                        base + "." + std::to_string(p) + ".vtu";
+    };
+    const std::string name = piece(Utilities::MPI::this_mpi_process(comm));
+    std::ofstream     out(directory + "/" + name);
     AssertThrow(out, ExcMessage("Cannot write " + directory + "/" + name));
     data_out.write_vtu(out);
-
-    records.emplace_back(time, name);
+    if (!is_root(comm))
+      return;
+    std::string record = name;
+    if (n_processes > 1)
+      {
+        std::vector<std::string> pieces;
+        for (unsigned int p = 0; p < n_processes; ++p)
+          pieces.push_back(piece(p));
+        record = base + ".pvtu";
+        std::ofstream pvtu(directory + "/" + record);
+        data_out.write_pvtu_record(pvtu, pieces);
+      }
+    records.emplace_back(time, record);
     std::ofstream pvd(directory + "/solution.pvd");
     DataOutBase::write_pvd_record(pvd, records);
   }

@@ -8,6 +8,7 @@
 #include <deal.II/fe/mapping_q1.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
 
 #include <deal.II/numerics/vector_tools.h>
 
@@ -72,13 +73,19 @@ namespace ContactDynamics
     prm.leave_subsection();
 
     declare_contact_parameters(prm);
+
+    prm.enter_subsection("Parallel");
+    ParallelParameters::declare_parameters(prm);
+    prm.leave_subsection();
   }
 
   template <int dim>
-  Simulator<dim>::Simulator(ParameterHandler &prm, std::ostream &screen)
-    : pcout(screen, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    , timer(MPI_COMM_WORLD, pcout, TimerOutput::never, TimerOutput::wall_times)
-    , dof_handler(triangulation)
+  Simulator<dim>::Simulator(ParameterHandler &prm,
+                            std::ostream     &screen,
+                            const MPI_Comm    comm)
+    : pcout(screen, is_root(comm))
+    , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , mpi_communicator(comm)
   {
     scene.parse_parameters(prm);
     layout = scene.layout();
@@ -126,8 +133,40 @@ namespace ContactDynamics
     else
       fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(1), dim);
 
+    prm.enter_subsection("Parallel");
+    parallel_parameters.parse_parameters(prm);
+    prm.leave_subsection();
+
     mechanics = std::make_unique<SolidMechanics<dim>>(dof_handler, bodies);
-    scene.create_triangulation(triangulation);
+    // every process keeps the whole mesh: the contact needs the whole
+    // surfaces, and the meshes of 2-D contact scenes are small
+    // (doc/parallel.md)
+    triangulation = std::make_unique<parallel::shared::Triangulation<dim>>(
+      mpi_communicator,
+      Triangulation<dim>::none,
+      false,
+      parallel_parameters.partitioner == "metis" ?
+        parallel::shared::Triangulation<dim>::partition_metis :
+        parallel::shared::Triangulation<dim>::partition_zorder);
+    scene.create_triangulation(*triangulation);
+    dof_handler.reinit(*triangulation);
+  }
+
+  template <int dim>
+  const VectorType &
+  Simulator<dim>::ghosted(const VectorType &x, VectorType &ghost) const
+  {
+    if (ghost.size() != x.size())
+      ghost.reinit(locally_owned, locally_relevant, mpi_communicator);
+    ghost = x;
+    return ghost;
+  }
+
+  template <int dim>
+  std::ostream &
+  Simulator<dim>::screen_log()
+  {
+    return pcout.is_active() ? pcout.get_stream() : null_stream;
   }
 
   template <int dim>
@@ -137,8 +176,12 @@ namespace ContactDynamics
     TimerOutput::Scope t(timer, "setup");
     dof_handler.distribute_dofs(*fe);
     locally_owned = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant);
     if (contact)
-      contact->setup(dof_handler);
+      {
+        contact->setup(dof_handler);
+        locally_relevant.add_indices(contact->surface_dofs());
+      }
 
     // Dirichlet degrees of freedom: Newton increments vanish there; so do
     // the multipliers the contact formulation does not use.
@@ -160,10 +203,12 @@ namespace ContactDynamics
                             &residual_full_old,
                             &increment,
                             &body_force})
-      vec->reinit(locally_owned, MPI_COMM_WORLD);
+      vec->reinit(locally_owned, mpi_communicator);
+    for (VectorType *vec : {&u_ghost, &v_ghost, &a_ghost})
+      vec->reinit(locally_owned, locally_relevant, mpi_communicator);
     mechanics->assemble_body_force(body_force);
     if (contact)
-      contact->update_candidates(u);
+      contact->update_candidates(ghosted(u, u_ghost));
     setup_sparsity();
   }
 
@@ -178,7 +223,7 @@ namespace ContactDynamics
       for (unsigned int d = 0; d < n_components; ++d)
         coupling(c, d) =
           (c < dim && d < dim) ? DoFTools::always : DoFTools::none;
-    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DynamicSparsityPattern dsp(locally_relevant);
     DoFTools::make_sparsity_pattern(dof_handler,
                                     coupling,
                                     dsp,
@@ -188,8 +233,14 @@ namespace ContactDynamics
       dsp.add(i, i);
     if (contact)
       contact->add_sparsity(dsp);
+    // rows assembled on other processes (cells and contact patches at the
+    // edges of the parts) go to their owners
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               locally_owned,
+                                               mpi_communicator,
+                                               locally_relevant);
     newton.release_factorization();
-    jacobian.reinit(locally_owned, locally_owned, dsp, MPI_COMM_WORLD);
+    jacobian.reinit(locally_owned, locally_owned, dsp, mpi_communicator);
     structure_changed = true;
   }
 
@@ -253,6 +304,7 @@ namespace ContactDynamics
     for (const auto &p : dirichlet.values(dof_handler, 0.))
       if (locally_owned.is_element(p.first))
         u(p.first) = p.second;
+    u.compress(VectorOperation::insert);
     if (!integrator.is_dynamic())
       v = 0;
     else
@@ -260,6 +312,7 @@ namespace ContactDynamics
         for (const auto &p : v_dirichlet)
           if (locally_owned.is_element(p.first))
             v(p.first) = p.second;
+        v.compress(VectorOperation::insert);
 
         // consistent initial acceleration: M a0 = f_body - C v0 - f_int(u0)
         AffineConstraints<double> acceleration_constraints;
@@ -273,15 +326,17 @@ namespace ContactDynamics
         for (unsigned int d = 0; d < dim; ++d)
           extra[d] = false;
         for (const auto i :
-             DoFTools::extract_dofs(dof_handler, ComponentMask(extra)))
+             union_over_processes(DoFTools::extract_dofs(dof_handler,
+                                                         ComponentMask(extra)),
+                                  mpi_communicator))
           if (!acceleration_constraints.is_constrained(i))
             acceleration_constraints.add_line(i);
         acceleration_constraints.close();
         MatrixType mass;
         mass.reinit(jacobian);
         mechanics->assemble_initial_acceleration_system(
-          u,
-          v,
+          ghosted(u, u_ghost),
+          ghosted(v, v_ghost),
           acceleration_constraints,
           mass,
           residual);
@@ -290,13 +345,10 @@ namespace ContactDynamics
         solver.solve(mass, a, residual);
         acceleration_constraints.distribute(a);
       }
-    u.compress(VectorOperation::insert);
-    v.compress(VectorOperation::insert);
-
     // reactions at t = 0 for the trapezoidal external work
-    mechanics->assemble(u,
-                        v,
-                        a,
+    mechanics->assemble(ghosted(u, u_ghost),
+                        ghosted(v, v_ghost),
+                        ghosted(a, a_ghost),
                         integrator.is_dynamic() ? 1. : 0.,
                         0.,
                         increment_constraints,
@@ -317,23 +369,23 @@ namespace ContactDynamics
     if (contact)
       {
         // gaps at the initial state: overlapping bodies stop the run here
-        if (contact->update_candidates(u))
+        if (contact->update_candidates(u_ghost))
           setup_sparsity();
         VectorType contact_residual(residual), contact_full(residual_full_old);
         contact->assemble(
-          TrialState{u, v, 0., time_step, integrator.is_dynamic()},
+          TrialState{u_ghost, v_ghost, 0., time_step, integrator.is_dynamic()},
           increment_constraints,
           false,
           contact_residual,
           jacobian,
           contact_full);
-        contact->check_initial_state(pcout.get_stream());
+        contact->check_initial_state(screen_log());
       }
 
     energies = EnergyBalance();
     energies.kinetic =
-      integrator.is_dynamic() ? mechanics->kinetic_energy(v) : 0.;
-    energies.elastic = mechanics->elastic_energy(u);
+      integrator.is_dynamic() ? mechanics->kinetic_energy(v_ghost) : 0.;
+    energies.elastic = mechanics->elastic_energy(u_ghost);
     energies.initial = energies.kinetic + energies.elastic;
   }
 
@@ -342,7 +394,9 @@ namespace ContactDynamics
   Simulator<dim>::initialize()
   {
     wall_timer.restart();
-    std::filesystem::create_directories(output_parameters.directory);
+    if (is_root(mpi_communicator))
+      std::filesystem::create_directories(output_parameters.directory);
+    MPI_Barrier(mpi_communicator);
     time                         = 0;
     step                         = 0;
     cumulative_newton_iterations = 0;
@@ -366,19 +420,43 @@ namespace ContactDynamics
     if (contact)
       for (const auto &c : contact->statistics_columns())
         columns.push_back(c);
-    statistics = std::make_unique<StatisticsFile>(output_parameters.directory +
-                                                    "/statistics.csv",
-                                                  columns);
+    if (is_root(mpi_communicator))
+      statistics =
+        std::make_unique<StatisticsFile>(output_parameters.directory +
+                                           "/statistics.csv",
+                                         columns);
     solution_writer =
-      std::make_unique<SolutionWriter<dim>>(output_parameters.directory,
+      std::make_unique<SolutionWriter<dim>>(mpi_communicator,
+                                            output_parameters.directory,
                                             contact ?
                                               contact->extra_component_names() :
                                               std::vector<std::string>());
 
     pcout << "Scene '" << scene.name()
-          << "': " << triangulation.n_active_cells() << " cells, "
+          << "': " << triangulation->n_active_cells() << " cells, "
           << dof_handler.n_dofs() << " unknowns, " << bodies.size() << " bod"
           << (bodies.size() == 1 ? "y" : "ies") << std::endl;
+    const unsigned int n_processes =
+      Utilities::MPI::n_mpi_processes(mpi_communicator);
+    if (n_processes > 1)
+      {
+        const auto cells =
+          Utilities::MPI::gather(mpi_communicator,
+                                 triangulation->n_locally_owned_active_cells());
+        const auto unknowns =
+          Utilities::MPI::gather(mpi_communicator, locally_owned.n_elements());
+        const auto nodes =
+          Utilities::MPI::gather(mpi_communicator,
+                                 contact ? contact->n_owned_contact_nodes() :
+                                           0u);
+        pcout << n_processes << " MPI processes ("
+              << parallel_parameters.partitioner
+              << " partition); cells / unknowns / secondary contact nodes:";
+        for (unsigned int p = 0; p < cells.size(); ++p)
+          pcout << (p ? ", " : " ") << cells[p] << " / " << unknowns[p] << " / "
+                << nodes[p];
+        pcout << std::endl;
+      }
     output_step(0, 0., true);
   }
 
@@ -404,16 +482,19 @@ namespace ContactDynamics
                            MatrixType &jacobian_out)
   {
     set_trial_velocity_and_acceleration();
+    ghosted(u_new, u_ghost);
+    ghosted(v_new, v_ghost);
+    ghosted(a_new, a_ghost);
     if (contact)
       {
         TimerOutput::Scope t(timer, "contact search");
-        if (contact->update_candidates(u_new))
+        if (contact->update_candidates(u_ghost))
           setup_sparsity();
       }
     TimerOutput::Scope t(timer, "bulk assembly");
-    mechanics->assemble(u_new,
-                        v_new,
-                        a_new,
+    mechanics->assemble(u_ghost,
+                        v_ghost,
+                        a_ghost,
                         integrator.acceleration_factor(dt_current),
                         integrator.velocity_factor(dt_current),
                         increment_constraints,
@@ -425,8 +506,8 @@ namespace ContactDynamics
     if (contact)
       {
         TimerOutput::Scope tc(timer, "contact assembly");
-        contact->assemble(TrialState{u_new,
-                                     v_new,
+        contact->assemble(TrialState{u_ghost,
+                                     v_ghost,
                                      integrator.velocity_factor(dt_current),
                                      dt_current,
                                      integrator.is_dynamic()},
@@ -490,7 +571,8 @@ namespace ContactDynamics
           u_new(p.first) = p.second;
       if (contact)
         for (const auto i : contact->multiplier_dofs())
-          u_new(i) = u(i);
+          if (locally_owned.is_element(i))
+            u_new(i) = u(i);
       u_new.compress(VectorOperation::insert);
     }
 
@@ -502,7 +584,7 @@ namespace ContactDynamics
                             residual,
                             increment,
                             structure_changed,
-                            pcout.get_stream());
+                            screen_log());
     }
     std::string failure = result.failure;
 
@@ -515,19 +597,23 @@ namespace ContactDynamics
         mean_velocity.sadd(0.5, 0.5, v_new);
         increment = u_new;
         increment -= u;
+        const VectorType &mean_ghost = ghosted(mean_velocity, scratch_ghost[0]);
         updated.dissipated +=
-          dt * mechanics->damping_product(mean_velocity, mean_velocity);
+          dt * mechanics->damping_product(mean_ghost, mean_ghost);
         double boundary_work = 0;
         for (const auto &line : increment_constraints.get_lines())
           if (locally_owned.is_element(line.index))
             boundary_work +=
               increment(line.index) * 0.5 *
               (residual_full_old(line.index) + residual_full(line.index));
-        updated.external += Utilities::MPI::sum(boundary_work, MPI_COMM_WORLD) +
-                            increment * body_force;
+        updated.external +=
+          Utilities::MPI::sum(boundary_work, mpi_communicator) +
+          increment * body_force;
         updated.kinetic =
-          integrator.is_dynamic() ? mechanics->kinetic_energy(v_new) : 0.;
-        updated.elastic = mechanics->elastic_energy(u_new);
+          integrator.is_dynamic() ?
+            mechanics->kinetic_energy(ghosted(v_new, scratch_ghost[0])) :
+            0.;
+        updated.elastic = mechanics->elastic_energy(u_ghost);
         if (!std::isfinite(updated.error()))
           failure = "the energies are not finite numbers";
       }
@@ -581,7 +667,8 @@ namespace ContactDynamics
     if (contact)
       for (const double x : contact->statistics())
         row.push_back(x);
-    statistics->write_row(row);
+    if (statistics)
+      statistics->write_row(row);
     const unsigned int interval = output_parameters.vtu_interval;
     if (interval > 0 && (force_vtu || step % interval == 0))
       write_solution();
@@ -610,26 +697,34 @@ namespace ContactDynamics
         for (const auto i : DoFTools::extract_boundary_dofs(dof_handler,
                                                             ComponentMask(mask),
                                                             {id}))
-          if (increment_constraints.is_constrained(i))
+          if (increment_constraints.is_constrained(i) &&
+              locally_owned.is_element(i))
             // the support balances the unconstrained residual there
             force[d] += residual_full_old(i);
       }
-    return force;
+    return Utilities::MPI::sum(force, mpi_communicator);
   }
 
   template <int dim>
   void
   Simulator<dim>::write_solution()
   {
-    solution_writer->write(
-      dof_handler,
-      *mechanics,
-      u,
-      v,
-      time,
-      step,
-      contact ? contact->nodal_output_fields() :
-                std::vector<std::pair<const VectorType *, std::string>>());
+    std::vector<std::pair<const VectorType *, std::string>> fields;
+    std::vector<VectorType>                                 field_ghosts;
+    if (contact)
+      {
+        fields = contact->nodal_output_fields();
+        field_ghosts.resize(fields.size());
+        for (unsigned int f = 0; f < fields.size(); ++f)
+          fields[f].first = &ghosted(*fields[f].first, field_ghosts[f]);
+      }
+    solution_writer->write(dof_handler,
+                           *mechanics,
+                           ghosted(u, scratch_ghost[0]),
+                           ghosted(v, scratch_ghost[1]),
+                           time,
+                           step,
+                           fields);
     if (contact)
       contact->write_output(output_parameters.directory, step);
   }

@@ -2,6 +2,7 @@
 
 #include <deal.II/fe/fe_values.h>
 
+#include <contact_dynamics/parallel.h>
 #include <contact_dynamics/solid_mechanics.h>
 
 namespace ContactDynamics
@@ -105,85 +106,92 @@ namespace ContactDynamics
     std::vector<Tensor<1, dim>> phi(n);
     std::vector<Tensor<2, dim>> tangent_grad_phi(n);
 
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          f.reinit(cell);
-          const Material<dim>  &material = *materials[cell->material_id()];
-          const BodyParameters &body     = bodies[cell->material_id()];
-          const double          rho      = body.material.density;
-          const double          alpha = body.material.rayleigh_mass_coefficient;
-          const double   beta = body.material.rayleigh_stiffness_coefficient;
-          Tensor<1, dim> body_force;
-          for (unsigned int d = 0; d < dim; ++d)
-            body_force[d] = body.body_force[d];
+    // an inverted element throws on its process only
+    const auto local = [&]() {
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            f.reinit(cell);
+            const Material<dim>  &material = *materials[cell->material_id()];
+            const BodyParameters &body     = bodies[cell->material_id()];
+            const double          rho      = body.material.density;
+            const double   alpha = body.material.rayleigh_mass_coefficient;
+            const double   beta  = body.material.rayleigh_stiffness_coefficient;
+            Tensor<1, dim> body_force;
+            for (unsigned int d = 0; d < dim; ++d)
+              body_force[d] = body.body_force[d];
 
-          f.fe_values[f.displacement].get_function_gradients(u, f.grad_u);
-          if (dynamic)
-            {
-              f.fe_values[f.displacement].get_function_values(v, f.v);
-              f.fe_values[f.displacement].get_function_values(a, f.a);
-              f.fe_values[f.displacement].get_function_gradients(v, f.grad_v);
-            }
-          cell_matrix = 0;
-          cell_rhs    = 0;
+            f.fe_values[f.displacement].get_function_gradients(u, f.grad_u);
+            if (dynamic)
+              {
+                f.fe_values[f.displacement].get_function_values(v, f.v);
+                f.fe_values[f.displacement].get_function_values(a, f.a);
+                f.fe_values[f.displacement].get_function_gradients(v, f.grad_v);
+              }
+            cell_matrix = 0;
+            cell_rhs    = 0;
 
-          for (unsigned int q = 0; q < f.quadrature.size(); ++q)
-            {
-              Tensor<2, dim> stress;
-              Tensor<4, dim> tangent;
-              double         W;
-              material.evaluate(f.grad_u[q], stress, tangent, W);
-              Tensor<1, dim> inertia = -body_force;
-              if (dynamic)
-                {
-                  inertia += rho * (f.a[q] + alpha * f.v[q]);
-                  if (beta > 0)
-                    stress += beta * double_contract<2, 0, 3, 1>(
-                                       material.reference_elasticity(),
-                                       symmetrize(f.grad_v[q]));
-                }
-              const double JxW = f.fe_values.JxW(q);
-              for (const unsigned int i : f.u_local)
-                {
-                  phi[i]      = f.fe_values[f.displacement].value(i, q);
-                  grad_phi[i] = f.fe_values[f.displacement].gradient(i, q);
-                  cell_rhs(i) +=
-                    (inertia * phi[i] + scalar_product(stress, grad_phi[i])) *
-                    JxW;
-                }
-              if (!with_jacobian)
-                continue;
+            for (unsigned int q = 0; q < f.quadrature.size(); ++q)
+              {
+                Tensor<2, dim> stress;
+                Tensor<4, dim> tangent;
+                double         W;
+                material.evaluate(f.grad_u[q], stress, tangent, W);
+                Tensor<1, dim> inertia = -body_force;
+                if (dynamic)
+                  {
+                    inertia += rho * (f.a[q] + alpha * f.v[q]);
+                    if (beta > 0)
+                      stress += beta * double_contract<2, 0, 3, 1>(
+                                         material.reference_elasticity(),
+                                         symmetrize(f.grad_v[q]));
+                  }
+                const double JxW = f.fe_values.JxW(q);
+                for (const unsigned int i : f.u_local)
+                  {
+                    phi[i]      = f.fe_values[f.displacement].value(i, q);
+                    grad_phi[i] = f.fe_values[f.displacement].gradient(i, q);
+                    cell_rhs(i) +=
+                      (inertia * phi[i] + scalar_product(stress, grad_phi[i])) *
+                      JxW;
+                  }
+                if (!with_jacobian)
+                  continue;
 
-              if (dynamic && beta > 0)
-                tangent += (c_v * beta) * material.reference_elasticity();
-              const double mass_factor =
-                dynamic ? rho * (c_a + alpha * c_v) : 0.;
-              for (const unsigned int j : f.u_local)
-                tangent_grad_phi[j] =
-                  double_contract<2, 0, 3, 1>(tangent, grad_phi[j]);
-              for (const unsigned int i : f.u_local)
+                if (dynamic && beta > 0)
+                  tangent += (c_v * beta) * material.reference_elasticity();
+                const double mass_factor =
+                  dynamic ? rho * (c_a + alpha * c_v) : 0.;
                 for (const unsigned int j : f.u_local)
-                  cell_matrix(i, j) +=
-                    (scalar_product(grad_phi[i], tangent_grad_phi[j]) +
-                     mass_factor * (phi[i] * phi[j])) *
-                    JxW;
-            }
+                  tangent_grad_phi[j] =
+                    double_contract<2, 0, 3, 1>(tangent, grad_phi[j]);
+                for (const unsigned int i : f.u_local)
+                  for (const unsigned int j : f.u_local)
+                    cell_matrix(i, j) +=
+                      (scalar_product(grad_phi[i], tangent_grad_phi[j]) +
+                       mass_factor * (phi[i] * phi[j])) *
+                      JxW;
+              }
 
-          residual_full.add(f.dofs, cell_rhs);
-          if (with_jacobian)
-            constraints.distribute_local_to_global(cell_matrix,
-                                                   cell_rhs,
-                                                   f.dofs,
-                                                   jacobian,
-                                                   residual);
-          else
-            constraints.distribute_local_to_global(cell_rhs, f.dofs, residual);
-        }
-    residual.compress(VectorOperation::add);
-    residual_full.compress(VectorOperation::add);
-    if (with_jacobian)
-      jacobian.compress(VectorOperation::add);
+            residual_full.add(f.dofs, cell_rhs);
+            if (with_jacobian)
+              constraints.distribute_local_to_global(cell_matrix,
+                                                     cell_rhs,
+                                                     f.dofs,
+                                                     jacobian,
+                                                     residual);
+            else
+              constraints.distribute_local_to_global(cell_rhs,
+                                                     f.dofs,
+                                                     residual);
+          }
+    };
+    run_collectively(residual.get_mpi_communicator(), local, [&]() {
+      residual.compress(VectorOperation::add);
+      residual_full.compress(VectorOperation::add);
+      if (with_jacobian)
+        jacobian.compress(VectorOperation::add);
+    });
   }
 
   template <int dim>
@@ -196,8 +204,10 @@ namespace ContactDynamics
     VectorType                      &rhs) const
   {
     // -(C v0 + f_int(u0) - f_body): the residual with zero acceleration
-    VectorType zero_a(v), residual(v), residual_full(v);
+    VectorType zero_a(v), residual, residual_full;
     zero_a = 0;
+    residual.reinit(rhs.locally_owned_elements(), rhs.get_mpi_communicator());
+    residual_full.reinit(residual);
     assemble(u,
              v,
              zero_a,

@@ -5,6 +5,7 @@
 
 #include <contact_dynamics/contact/contact_search.h>
 #include <contact_dynamics/contact/surface_contact.h>
+#include <contact_dynamics/parallel.h>
 
 #include <algorithm>
 #include <iomanip>
@@ -104,6 +105,8 @@ namespace ContactDynamics
   void
   SurfaceContact<dim>::setup(const DoFHandler<dim> &dof_handler)
   {
+    comm       = dof_handler.get_communicator();
+    owned_dofs = dof_handler.locally_owned_dofs();
     pairs.clear();
     pairs.resize(contact.pairs.size());
     std::set<types::global_dof_index> secondary_normal;
@@ -127,6 +130,21 @@ namespace ContactDynamics
               secondary_normal.insert(pair.secondary.dofs[j][dim + 1]);
           }
         friction = friction || pair.friction_coefficient > 0;
+
+        pair.owned_node.assign(pair.secondary.n_nodes(), false);
+        for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
+          pair.owned_node[j] =
+            owned_dofs.is_element(pair.secondary.dofs[j][dim]);
+        pair.handled_patch.assign(n_patches(pair), false);
+        pair.force_patch.assign(n_patches(pair), false);
+        for (unsigned int e = 0; e < n_patches(pair); ++e)
+          {
+            const auto nodes = patch_nodes(pair, e);
+            for (const unsigned int j : nodes)
+              pair.handled_patch[e] =
+                pair.handled_patch[e] || pair.owned_node[j];
+            pair.force_patch[e] = pair.owned_node[nodes[0]];
+          }
       }
     normal_multiplier_dofs.assign(secondary_normal.begin(),
                                   secondary_normal.end());
@@ -136,8 +154,11 @@ namespace ContactDynamics
     std::vector<bool> mask(2 * dim, false);
     for (unsigned int c = dim; c < 2 * dim; ++c)
       mask[c] = true;
+    // (every process needs the constraints of the dofs it touches)
     for (const auto i :
-         DoFTools::extract_dofs(dof_handler, ComponentMask(mask)))
+         union_over_processes(DoFTools::extract_dofs(dof_handler,
+                                                     ComponentMask(mask)),
+                              comm))
       if (secondary_normal.count(i) == 0)
         other_multiplier_dofs.push_back(i);
 
@@ -161,7 +182,7 @@ namespace ContactDynamics
             }
         monitored.push_back(where);
       }
-    if (!directory.empty())
+    if (!directory.empty() && is_root(comm))
       {
         history =
           std::make_unique<std::ofstream>(directory + "/contact_history.csv");
@@ -195,19 +216,26 @@ namespace ContactDynamics
                                           const double      margin_factor) const
   {
     std::vector<BoundingBox<dim>> secondary, primary;
+    std::vector<unsigned int>     handled;
     for (unsigned int p = 0; p < n_patches(pair); ++p)
-      {
-        double size = 0;
-        secondary.push_back(patch_box(pair, p, u, size));
-        secondary.back().extend(margin_factor * size);
-      }
+      if (pair.handled_patch[p])
+        {
+          double size = 0;
+          secondary.push_back(patch_box(pair, p, u, size));
+          secondary.back().extend(margin_factor * size);
+          handled.push_back(p);
+        }
     for (unsigned int f = 0; f < pair.primary.n_faces(); ++f)
       {
         double length = 0;
         primary.push_back(pair.primary.face_box(f, u, length));
         primary.back().extend(margin_factor * length);
       }
-    return find_candidate_pairs(secondary, primary);
+    const auto found = find_candidate_pairs(secondary, primary);
+    std::vector<std::vector<unsigned int>> result(n_patches(pair));
+    for (unsigned int k = 0; k < handled.size(); ++k)
+      result[handled[k]] = found[k];
+    return result;
   }
 
   template <int dim>
@@ -215,10 +243,7 @@ namespace ContactDynamics
   SurfaceContact<dim>::update_candidates(const VectorType &u)
   {
     if (gap_field.size() != u.size())
-      {
-        gap_field.reinit(u);
-        gap_field = 0;
-      }
+      gap_field.reinit(owned_dofs, comm);
     bool rebuild = false;
     for (auto &pair : pairs)
       {
@@ -236,7 +261,8 @@ namespace ContactDynamics
             rebuild      = true;
           }
       }
-    return rebuild;
+    // the sparsity pattern is rebuilt by all processes together
+    return Utilities::MPI::logical_or(rebuild, comm);
   }
 
   template <int dim>
@@ -249,18 +275,42 @@ namespace ContactDynamics
         std::vector<std::set<types::global_dof_index>> node_columns(
           pair.secondary.n_nodes());
         for (unsigned int p = 0; p < n_patches(pair); ++p)
-          {
-            const auto unknowns = patch_unknowns(pair, p, pair.pattern[p]);
-            for (const auto row : unknowns)
-              for (const auto col : unknowns)
-                dsp.add(row, col);
-            for (const unsigned int n : patch_nodes(pair, p))
-              node_columns[n].insert(unknowns.begin(), unknowns.end());
-          }
+          if (pair.handled_patch[p])
+            {
+              const auto unknowns = patch_unknowns(pair, p, pair.pattern[p]);
+              for (const auto row : unknowns)
+                for (const auto col : unknowns)
+                  dsp.add(row, col);
+              for (const unsigned int n : patch_nodes(pair, p))
+                node_columns[n].insert(unknowns.begin(), unknowns.end());
+            }
         for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
-          for (const auto col : node_columns[j])
-            dsp.add(pair.secondary.dofs[j][dim], col);
+          if (pair.owned_node[j])
+            for (const auto col : node_columns[j])
+              dsp.add(pair.secondary.dofs[j][dim], col);
       }
+  }
+
+  template <int dim>
+  IndexSet
+  SurfaceContact<dim>::surface_dofs() const
+  {
+    IndexSet dofs(owned_dofs.size());
+    for (const auto &pair : pairs)
+      for (const auto *surface : {&pair.secondary, &pair.primary})
+        for (const auto &node_dofs : surface->dofs)
+          dofs.add_indices(node_dofs.begin(), node_dofs.end());
+    dofs.compress();
+    return dofs;
+  }
+
+  template <int dim>
+  unsigned int
+  SurfaceContact<dim>::n_owned_nodes(const unsigned int pair) const
+  {
+    return std::count(pairs[pair].owned_node.begin(),
+                      pairs[pair].owned_node.end(),
+                      true);
   }
 
   template <int dim>
@@ -275,6 +325,8 @@ namespace ContactDynamics
     MatrixType &jacobian,
     VectorType &residual_full)
   {
+    if (skip_forces)
+      return;
     residual_full(row) += value;
     force(row) += value;
     if (constraints.is_constrained(row))
@@ -378,7 +430,7 @@ namespace ContactDynamics
                               &force_committed,
                               &friction_force,
                               &friction_force_committed})
-          v->reinit(state.u);
+          v->reinit(owned_dofs, comm);
       }
     force          = 0;
     friction_force = 0;
@@ -387,98 +439,187 @@ namespace ContactDynamics
     n_active         = 0;
     total_force[0] = total_force[1] = 0;
 
-    for (auto &pair : pairs)
-      {
-        const unsigned int n_nodes = pair.secondary.n_nodes();
-        pair.gap.assign(n_nodes, LinearizedValue());
-        pair.weight.assign(n_nodes, LinearizedValue());
-        pair.gap_rate.assign(n_nodes, LinearizedValue());
-        pair.slip_rate.assign(n_nodes, LinearizedValue());
-        for (unsigned int p = 0; p < n_patches(pair); ++p)
-          assemble_patch(pair,
-                         p,
-                         state,
-                         constraints,
-                         with_jacobian,
-                         residual,
-                         jacobian,
-                         residual_full);
-
-        // the complementarity condition of every secondary node, scaled by
-        // its reference weight so that its row has force units
-        for (unsigned int j = 0; j < n_nodes; ++j)
-          {
-            NodeState                    &node = pair.nodes[j];
-            const types::global_dof_index row  = pair.secondary.dofs[j][dim];
-            const double scale  = pair.secondary.reference_weight[j];
-            const double lambda = state.u(row);
-            node.pressure = lambda * traction_per_multiplier(pair, j, state.u);
-            node.gap      = pair.gap[j].value;
-            node.weight   = pair.weight[j].value;
-            // a mortar node needs more than half its support covered: on a
-            // sliver the dual function can be negative and turn a clear gap
-            // into a weighted penetration
-            node.projected = node.weight > minimum_coverage() * scale;
-
-            // the constraint quantity c * g / w and its derivatives
-            LinearizedValue constraint;
-            bool            active = false;
-            if (node.projected)
+    const auto local = [&]() {
+      for (auto &pair : pairs)
+        {
+          const unsigned int n_nodes = pair.secondary.n_nodes();
+          pair.gap.assign(n_nodes, LinearizedValue());
+          pair.weight.assign(n_nodes, LinearizedValue());
+          pair.gap_rate.assign(n_nodes, LinearizedValue());
+          pair.slip_rate.assign(n_nodes, LinearizedValue());
+          // a patch at the edge of this process's part of the surface is
+          // assembled by both neighbours for the gaps of their nodes, its
+          // forces by one of them
+          for (unsigned int p = 0; p < n_patches(pair); ++p)
+            if (pair.handled_patch[p])
               {
-                const bool             rate = node.persistent && state.dynamic;
-                const LinearizedValue &g =
-                  rate ? pair.gap_rate[j] : pair.gap[j];
-                const double factor =
-                  complementarity.c_n * (rate ? state.dt : 1.);
-                const bool   normalize = complementarity.normalize_c_n;
-                const double w         = normalize ? node.weight : 1.;
-                constraint.value       = factor * g.value / w;
-                for (const auto &d : g.derivatives)
-                  constraint.derivatives[d.first] += factor * d.second / w;
-                if (normalize)
-                  for (const auto &d : pair.weight[j].derivatives)
-                    constraint.derivatives[d.first] -=
-                      factor * g.value * d.second / (w * w);
-                active = (lambda - constraint.value > 0);
+                skip_forces = !pair.force_patch[p];
+                assemble_patch(pair,
+                               p,
+                               state,
+                               constraints,
+                               with_jacobian,
+                               residual,
+                               jacobian,
+                               residual_full);
               }
-            node.active = active;
-            n_active += active;
-            if (constraints.is_constrained(row))
-              continue;
-            if (active)
-              {
-                residual(row) += scale * constraint.value;
-                if (with_jacobian)
-                  for (const auto &d : constraint.derivatives)
-                    if (!constraints.is_constrained(d.first))
-                      jacobian.add(row, d.first, scale * d.second);
-              }
-            else
-              {
-                residual(row) += scale * lambda;
-                if (with_jacobian)
-                  jacobian.add(row, row, scale);
-              }
+          skip_forces = false;
 
-            if (pair.friction_coefficient > 0)
-              assemble_friction(pair,
-                                j,
-                                active,
-                                lambda,
-                                constraint,
-                                constraints,
-                                with_jacobian,
-                                residual,
-                                jacobian);
-          }
-        for (unsigned int j = 0; j < n_nodes; ++j)
-          for (unsigned int d = 0; d < 2; ++d)
-            total_force[d] -= force(pair.secondary.dofs[j][d]);
-      }
+          // the complementarity condition of every secondary node, scaled by
+          // its reference weight so that its row has force units
+          for (unsigned int j = 0; j < n_nodes; ++j)
+            if (pair.owned_node[j])
+              {
+                NodeState                    &node = pair.nodes[j];
+                const types::global_dof_index row = pair.secondary.dofs[j][dim];
+                const double scale  = pair.secondary.reference_weight[j];
+                const double lambda = state.u(row);
+                node.pressure =
+                  lambda * traction_per_multiplier(pair, j, state.u);
+                node.gap    = pair.gap[j].value;
+                node.weight = pair.weight[j].value;
+                // a mortar node needs more than half its support covered: on a
+                // sliver the dual function can be negative and turn a clear gap
+                // into a weighted penetration
+                node.projected = node.weight > minimum_coverage() * scale;
+
+                // the constraint quantity c * g / w and its derivatives
+                LinearizedValue constraint;
+                bool            active = false;
+                if (node.projected)
+                  {
+                    const bool rate = node.persistent && state.dynamic;
+                    const LinearizedValue &g =
+                      rate ? pair.gap_rate[j] : pair.gap[j];
+                    const double factor =
+                      complementarity.c_n * (rate ? state.dt : 1.);
+                    const bool   normalize = complementarity.normalize_c_n;
+                    const double w         = normalize ? node.weight : 1.;
+                    constraint.value       = factor * g.value / w;
+                    for (const auto &d : g.derivatives)
+                      constraint.derivatives[d.first] += factor * d.second / w;
+                    if (normalize)
+                      for (const auto &d : pair.weight[j].derivatives)
+                        constraint.derivatives[d.first] -=
+                          factor * g.value * d.second / (w * w);
+                    active = (lambda - constraint.value > 0);
+                  }
+                node.active = active;
+                n_active += active;
+                if (constraints.is_constrained(row))
+                  continue;
+                if (active)
+                  {
+                    residual(row) += scale * constraint.value;
+                    if (with_jacobian)
+                      for (const auto &d : constraint.derivatives)
+                        if (!constraints.is_constrained(d.first))
+                          jacobian.add(row, d.first, scale * d.second);
+                  }
+                else
+                  {
+                    residual(row) += scale * lambda;
+                    if (with_jacobian)
+                      jacobian.add(row, row, scale);
+                  }
+
+                if (pair.friction_coefficient > 0)
+                  assemble_friction(pair,
+                                    j,
+                                    active,
+                                    lambda,
+                                    constraint,
+                                    constraints,
+                                    with_jacobian,
+                                    residual,
+                                    jacobian);
+              }
+        }
+    };
+    run_collectively(comm, local, [&]() {
+      finish_assembly(residual, jacobian, residual_full, with_jacobian);
+    });
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::finish_assembly(VectorType &residual,
+                                       MatrixType &jacobian,
+                                       VectorType &residual_full,
+                                       const bool  with_jacobian)
+  {
+    skip_forces = false;
     residual.compress(VectorOperation::add);
     residual_full.compress(VectorOperation::add);
     if (with_jacobian)
       jacobian.compress(VectorOperation::add);
+    force.compress(VectorOperation::add);
+    friction_force.compress(VectorOperation::add);
+
+    for (const auto &pair : pairs)
+      for (const auto &node_dofs : pair.secondary.dofs)
+        for (unsigned int d = 0; d < 2; ++d)
+          if (owned_dofs.is_element(node_dofs[d]))
+            total_force[d] -= force(node_dofs[d]);
+    if (Utilities::MPI::n_mpi_processes(comm) > 1)
+      {
+        double sums[5] = {total_force[0],
+                          total_force[1],
+                          double(n_active),
+                          double(n_stick),
+                          double(n_slip)};
+        Utilities::MPI::sum(ArrayView<const double>(sums, 5),
+                            comm,
+                            ArrayView<double>(sums, 5));
+        total_force[0] = sums[0];
+        total_force[1] = sums[1];
+        n_active       = std::lround(sums[2]);
+        n_stick        = std::lround(sums[3]);
+        n_slip         = std::lround(sums[4]);
+        gather_node_states();
+      }
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::gather_node_states()
+  {
+    // each node's state comes from the process that owns it; a sum over
+    // processes of the owned entries (zeros elsewhere) gathers them
+    constexpr unsigned int n_fields = 8;
+    std::vector<double>    data;
+    for (const auto &pair : pairs)
+      for (unsigned int j = 0; j < pair.nodes.size(); ++j)
+        {
+          const NodeState &n = pair.nodes[j];
+          if (pair.owned_node[j])
+            data.insert(data.end(),
+                        {n.gap,
+                         n.weight,
+                         n.pressure,
+                         n.tangential,
+                         n.slip_rate,
+                         double(n.projected),
+                         double(n.active),
+                         double(n.stick)});
+          else
+            data.resize(data.size() + n_fields, 0.);
+        }
+    Utilities::MPI::sum(data, comm, data);
+    auto x = data.begin();
+    for (auto &pair : pairs)
+      for (auto &n : pair.nodes)
+        {
+          n.gap        = x[0];
+          n.weight     = x[1];
+          n.pressure   = x[2];
+          n.tangential = x[3];
+          n.slip_rate  = x[4];
+          n.projected  = x[5] > 0.5;
+          n.active     = x[6] > 0.5;
+          n.stick      = x[7] > 0.5;
+          x += n_fields;
+        }
   }
 
   template <int dim>
@@ -493,19 +634,22 @@ namespace ContactDynamics
         for (const auto &node_dofs : surface->dofs)
           for (unsigned int d = 0; d < dim; ++d)
             dofs.insert(node_dofs[d]);
-    double work = 0;
+    double work = 0, friction_work = 0;
     for (const auto i : dofs)
-      work -= ((*last_u)(i)-old_u(i)) * 0.5 *
-              (force(i) + (have_state ? force_committed(i) : 0.));
-    contact_work += work;
+      if (owned_dofs.is_element(i))
+        {
+          const double du = (*last_u)(i)-old_u(i);
+          work -=
+            du * 0.5 * (force(i) + (have_state ? force_committed(i) : 0.));
+          if (friction)
+            friction_work -= du * 0.5 *
+                             (friction_force(i) +
+                              (have_state ? friction_force_committed(i) : 0.));
+        }
+    contact_work += Utilities::MPI::sum(work, comm);
     if (friction)
       {
-        double friction_work = 0;
-        for (const auto i : dofs)
-          friction_work -= ((*last_u)(i)-old_u(i)) * 0.5 *
-                           (friction_force(i) +
-                            (have_state ? friction_force_committed(i) : 0.));
-        frictional_dissipation -= friction_work;
+        frictional_dissipation -= Utilities::MPI::sum(friction_work, comm);
         friction_force_committed = friction_force;
       }
     force_committed = force;
@@ -520,8 +664,10 @@ namespace ContactDynamics
           node.persistent =
             complementarity.persistency && node.projected &&
             node.normalized_gap() <= complementarity.capture_tolerance;
-          gap_field(pair.secondary.dofs[j][dim]) = node.normalized_gap();
+          if (pair.owned_node[j])
+            gap_field(pair.secondary.dofs[j][dim]) = node.normalized_gap();
         }
+    gap_field.compress(VectorOperation::insert);
 
     if (history)
       {
@@ -570,6 +716,8 @@ namespace ContactDynamics
   SurfaceContact<dim>::write_output(const std::string &dir,
                                     const unsigned int step)
   {
+    if (!is_root(comm))
+      return;
     std::ofstream out(dir + "/contact_surface-" +
                       Utilities::int_to_string(step, 5) + ".csv");
     out << "pair,node,x,y,gap,pressure,active,tangential_traction,stick\n";
@@ -626,10 +774,11 @@ namespace ContactDynamics
                            "them apart (Body <name>/Initial displacement, "
                            "the mesh), or set Contact/Initial penetration = "
                            "allow to let the contact push them apart."));
-    log << "Warning: " << where.str()
-        << "; Contact/Initial penetration = allow: the contact pushes them "
-           "apart, and the energy this creates appears in contact_work."
-        << std::endl;
+    if (is_root(comm))
+      log << "Warning: " << where.str()
+          << "; Contact/Initial penetration = allow: the contact pushes them "
+             "apart, and the energy this creates appears in contact_work."
+          << std::endl;
   }
 
   template class SurfaceContact<2>;

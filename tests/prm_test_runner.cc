@@ -46,9 +46,11 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream                    output("output");
-  std::ofstream                    screen("screen-output");
-  const std::string                filename = argv[1];
+  // under mpirun the first process writes the files
+  const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  std::ofstream output(root ? "output" : "/dev/null");
+  std::ofstream screen(root ? "screen-output" : "/dev/null");
+  const std::string filename = argv[1];
   try
     {
       ContactDynamics::run_parameter_file(filename, screen);
@@ -66,6 +68,8 @@ main(int argc, char **argv)
       return 0;
     }
 
+  if (!root)
+    return 0;
   ParameterHandler prm;
   ContactDynamics::read_parameters(filename, prm);
   prm.enter_subsection("Output");

@@ -18,7 +18,11 @@ initlog()
   static char                                    *args[] = {name, nullptr};
   static char                                   **argv   = args;
   static dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  static std::ofstream                            logfile("output");
+  // under mpirun the first process writes the output
+  static std::ofstream logfile(
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ?
+      "output" :
+      "/dev/null");
   dealii::deallog.attach(logfile);
   dealii::deallog.depth_console(0);
   logfile << std::setprecision(6);
@@ -95,13 +99,15 @@ read_test_parameters(const std::string        &filename,
 // entries replaced ({"Section/Entry", value}) and returns the columns of its
 // statistics.csv by name.
 // `inspect` sees the simulator at the end of the run. With `error`, a run
-// that stops with an exception returns what it wrote, and the message.
+// that stops with an exception returns what it wrote, and the message. On
+// several processes only the first one gets the columns.
 template <typename Simulator>
 std::map<std::string, std::vector<double>>
 run_shipped(const std::string                                      &file,
             const std::vector<std::pair<std::string, std::string>> &changes,
             const std::function<void(const Simulator &)> &inspect = {},
-            std::string                                  *error   = nullptr)
+            std::string                                  *error   = nullptr,
+            const MPI_Comm                                comm = MPI_COMM_WORLD)
 {
   dealii::ParameterHandler prm;
   ContactDynamics::read_parameters(std::string(SOURCE_DIR) + "/../" + file,
@@ -124,7 +130,7 @@ run_shipped(const std::string                                      &file,
   try
     {
       std::ostringstream screen;
-      Simulator          simulator(prm, screen);
+      Simulator          simulator(prm, screen, comm);
       simulator.run();
       if (inspect)
         inspect(simulator);
@@ -136,6 +142,8 @@ run_shipped(const std::string                                      &file,
       *error = e.what();
     }
 
+  if (dealii::Utilities::MPI::this_mpi_process(comm) != 0)
+    return {};
   std::ifstream in(directory + "/statistics.csv");
   std::string   line;
   std::getline(in, line);

@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -64,10 +65,11 @@ namespace ContactDynamics
   public:
     struct Result
     {
-      bool         converged        = false;
-      unsigned int iterations       = 0; // linear solves
-      double       initial_residual = 0;
-      double       final_residual   = 0;
+      bool         converged         = false;
+      unsigned int iterations        = 0; // linear solves
+      unsigned int linear_iterations = 0; // GMRES iterations
+      double       initial_residual  = 0;
+      double       final_residual    = 0;
       std::string  failure;
     };
 
@@ -112,18 +114,22 @@ namespace ContactDynamics
     release_factorization();
 
   private:
-    double       absolute_tolerance = 1e-10;
-    double       relative_tolerance = 1e-10;
-    double       step_tolerance     = 1e-12;
-    bool         cycle_damping      = true;
-    unsigned int max_iterations     = 20;
-    std::string  linear_solver      = "KLU";
-    bool         verbose_           = false;
-    TimerOutput *timer              = nullptr;
+    double       absolute_tolerance    = 1e-10;
+    double       relative_tolerance    = 1e-10;
+    double       step_tolerance        = 1e-12;
+    bool         cycle_damping         = true;
+    unsigned int max_iterations        = 20;
+    std::string  linear_solver         = "KLU";
+    double       linear_tolerance      = 1e-6;
+    unsigned int max_linear_iterations = 1000;
+    bool         verbose_              = false;
+    TimerOutput *timer                 = nullptr;
 
     std::unique_ptr<SolverControl>                  solver_control;
     std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
-    bool                                            factorization_valid = false;
+    std::unique_ptr<TrilinosWrappers::PreconditionBlockwiseDirect>
+         preconditioner;
+    bool factorization_valid = false;
   };
 } // namespace ContactDynamics
 

@@ -50,14 +50,20 @@ namespace ContactDynamics
   class SolutionWriter
   {
   public:
-    /** `extra_names` name the components after the displacement. */
-    SolutionWriter(const std::string              &directory,
+    /**
+     * `extra_names` name the components after the displacement. On several
+     * processes each writes its cells to solution-NNNNN.P.vtu and the first
+     * one the solution-NNNNN.pvtu record that joins them.
+     */
+    SolutionWriter(const MPI_Comm                  comm,
+                   const std::string              &directory,
                    const std::vector<std::string> &extra_names = {});
 
     /**
      * `nodal_fields`: further vectors on the same degrees of freedom, each
      * written as one scalar field: its component `dim` (the first one after
-     * the displacement), under the given name.
+     * the displacement), under the given name. All vectors must hold the
+     * ghost entries of the locally owned cells.
      */
     void
     write(const DoFHandler<dim>     &dof_handler,
@@ -70,6 +76,7 @@ namespace ContactDynamics
             &nodal_fields = {});
 
   private:
+    MPI_Comm                                    comm;
     std::string                                 directory;
     std::vector<std::string>                    extra_names;
     std::vector<std::pair<double, std::string>> records;

@@ -11,19 +11,20 @@
 
 #include <deal.II/fe/fe_system.h>
 
-#include <deal.II/grid/tria.h>
-
 #include <deal.II/lac/affine_constraints.h>
 
 #include <contact_dynamics/bodies.h>
 #include <contact_dynamics/boundary_conditions.h>
 #include <contact_dynamics/contact/contact_formulation.h>
 #include <contact_dynamics/nonlinear_solver.h>
+#include <contact_dynamics/parallel.h>
 #include <contact_dynamics/postprocessing.h>
 #include <contact_dynamics/scene.h>
 #include <contact_dynamics/solid_mechanics.h>
 #include <contact_dynamics/time_integrator.h>
 
+#include <deal.II/distributed/shared_tria.h>
+#include <fstream>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -60,9 +61,12 @@ namespace ContactDynamics
 
     /**
      * Reads and checks all parameters (throws ExcMessage on bad input) and
-     * builds the mesh; `screen` receives the progress output.
+     * builds the mesh; `screen` receives the progress output (from the
+     * first process of `comm` only).
      */
-    Simulator(ParameterHandler &prm, std::ostream &screen);
+    Simulator(ParameterHandler &prm,
+              std::ostream     &screen,
+              const MPI_Comm    comm = MPI_COMM_WORLD);
 
     /** Runs to the end time; throws if a step cannot be completed. */
     void
@@ -174,6 +178,14 @@ namespace ContactDynamics
                 const double       residual,
                 const bool         force_vtu);
 
+    /** `x` with the ghost entries this process reads, in `ghost`. */
+    const VectorType &
+    ghosted(const VectorType &x, VectorType &ghost) const;
+
+    /** Screen output of the root process; a sink on the others. */
+    std::ostream &
+    screen_log();
+
     ConditionalOStream pcout;
     TimerOutput        timer;
 
@@ -190,18 +202,26 @@ namespace ContactDynamics
     double           end_time;
     double           minimum_time_step;
 
-    Triangulation<dim>                       triangulation;
-    std::unique_ptr<ContactFormulation<dim>> contact;
-    std::unique_ptr<FESystem<dim>>           fe;
-    DoFHandler<dim>                          dof_handler;
-    IndexSet                                 locally_owned;
-    AffineConstraints<double>                increment_constraints;
-    std::unique_ptr<SolidMechanics<dim>>     mechanics;
+    MPI_Comm                                              mpi_communicator;
+    ParallelParameters                                    parallel_parameters;
+    std::unique_ptr<parallel::shared::Triangulation<dim>> triangulation;
+    std::unique_ptr<ContactFormulation<dim>>              contact;
+    std::unique_ptr<FESystem<dim>>                        fe;
+    DoFHandler<dim>                                       dof_handler;
+    IndexSet                                              locally_owned;
+    // owned, neighbours of owned cells, and every contact surface dof
+    IndexSet                             locally_relevant;
+    AffineConstraints<double>            increment_constraints;
+    std::unique_ptr<SolidMechanics<dim>> mechanics;
 
     // state at t_n, the trial state at t_{n+1}, and work vectors
     VectorType u, v, a, u_new, v_new, a_new;
     VectorType residual, residual_full, residual_full_old, increment,
       body_force;
+    // ghosted: the trial state of the last assembly (the contact keeps a
+    // reference to it until the step is committed), and scratch copies
+    VectorType    u_ghost, v_ghost, a_ghost, scratch_ghost[2];
+    std::ofstream null_stream; // never opened: discards what it gets
 
     double        time                         = 0;
     double        dt_current                   = 0;

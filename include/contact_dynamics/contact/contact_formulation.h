@@ -90,6 +90,13 @@ namespace ContactDynamics
     add_sparsity(DynamicSparsityPattern &dsp) const = 0;
 
     /**
+     * Every degree of freedom the formulation reads (on both surfaces): a
+     * process needs them all in its ghosted vectors.
+     */
+    virtual IndexSet
+    surface_dofs() const = 0;
+
+    /**
      * Adds the contact residual and, if asked, Jacobian; rows and columns
      * of constrained degrees of freedom are skipped. `residual_full`
      * receives the contact forces on all displacement degrees of freedom.
@@ -137,6 +144,13 @@ namespace ContactDynamics
     check_initial_state(std::ostream &log) const
     {
       (void)log;
+    }
+
+    /** Secondary nodes whose conditions this process assembles. */
+    virtual unsigned int
+    n_owned_contact_nodes() const
+    {
+      return 0;
     }
 
     /** Energy dissipated by the contact so far (friction). */

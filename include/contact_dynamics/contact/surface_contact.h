@@ -77,6 +77,22 @@ namespace ContactDynamics
     void
     add_sparsity(DynamicSparsityPattern &dsp) const override;
 
+    IndexSet
+    surface_dofs() const override;
+
+    /** Secondary nodes of a pair whose conditions this process assembles. */
+    unsigned int
+    n_owned_nodes(const unsigned int pair) const;
+
+    unsigned int
+    n_owned_contact_nodes() const override
+    {
+      unsigned int n = 0;
+      for (unsigned int p = 0; p < pairs.size(); ++p)
+        n += n_owned_nodes(p);
+      return n;
+    }
+
     void
     assemble(const TrialState                &state,
              const AffineConstraints<double> &constraints,
@@ -163,6 +179,10 @@ namespace ContactDynamics
       // relative tangential velocity (secondary minus primary)
       std::vector<LinearizedValue> gap, weight, gap_rate, slip_rate;
       double                       friction_coefficient = 0;
+      // in parallel: the nodes whose multipliers this process owns, the
+      // patches it assembles (those touching its nodes, for their gaps) and
+      // of these the ones whose forces it adds (first node owned)
+      std::vector<bool> owned_node, handled_patch, force_patch;
     };
 
     /**
@@ -227,7 +247,8 @@ namespace ContactDynamics
     void
     add_tangential_force(const types::global_dof_index row, const double value)
     {
-      friction_force(row) += value;
+      if (!skip_forces)
+        friction_force(row) += value;
     }
 
     /** A residual row of a contact force with its derivatives. */
@@ -262,6 +283,21 @@ namespace ContactDynamics
     compute_candidates(const PairData   &pair,
                        const VectorType &u,
                        const double      margin_factor) const;
+
+    /** Makes the node states of all processes' nodes known everywhere. */
+    void
+    gather_node_states();
+
+    /** After the patches and rows: compress and reduce the statistics. */
+    void
+    finish_assembly(VectorType &residual,
+                    MatrixType &jacobian,
+                    VectorType &residual_full,
+                    const bool  with_jacobian);
+
+    MPI_Comm comm        = MPI_COMM_WORLD;
+    bool     skip_forces = false; // a patch assembled for its gaps only
+    IndexSet owned_dofs;
 
     std::vector<types::global_dof_index> normal_multiplier_dofs;
     std::vector<types::global_dof_index> other_multiplier_dofs;

@@ -1,0 +1,79 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <contact_dynamics/parallel.h>
+
+#include <exception>
+#include <sstream>
+#include <vector>
+
+namespace ContactDynamics
+{
+  void
+  run_collectively(const MPI_Comm               comm,
+                   const std::function<void()> &local,
+                   const std::function<void()> &collective)
+  {
+    std::string failure;
+    try
+      {
+        local();
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream message;
+        e.print_info(message);
+        failure = Utilities::trim(message.str());
+        if (failure.empty())
+          failure = e.what();
+      }
+    catch (const std::exception &e)
+      {
+        failure = e.what();
+      }
+    collective();
+    if (Utilities::MPI::n_mpi_processes(comm) > 1)
+      for (const auto &f : Utilities::MPI::all_gather(comm, failure))
+        if (!f.empty())
+          {
+            failure = f;
+            break;
+          }
+    AssertThrow(failure.empty(), ExcMessage(failure));
+  }
+
+  void
+  ParallelParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Partitioner",
+      "metis",
+      Patterns::Selection("metis|z-order"),
+      "How the cells are divided among the MPI processes (every process "
+      "keeps the whole mesh, a parallel::shared::Triangulation, and "
+      "assembles its own cells and the contact conditions of its own "
+      "secondary nodes): 'metis' minimizes the cut between the parts; "
+      "'z-order' cuts a space-filling curve through the cells. Without "
+      "mpirun there is one part and this has no effect.");
+  }
+
+  void
+  ParallelParameters::parse_parameters(ParameterHandler &prm)
+  {
+    partitioner = prm.get("Partitioner");
+  }
+
+  IndexSet
+  union_over_processes(const IndexSet &set, const MPI_Comm comm)
+  {
+    if (Utilities::MPI::n_mpi_processes(comm) == 1)
+      return set;
+    IndexSet                             result(set.size());
+    std::vector<types::global_dof_index> mine;
+    set.fill_index_vector(mine);
+    for (const auto &indices : Utilities::MPI::all_gather(comm, mine))
+      result.add_indices(indices.begin(), indices.end());
+    result.compress();
+    return result;
+  }
+} // namespace ContactDynamics

@@ -1,0 +1,156 @@
+// The shipped scenes on two MPI processes give the statistics of the same
+// run on one process (the reference, computed here on the first process),
+// to solver tolerance: energies, contact forces and work, active, stick and
+// slip node counts, at every step. The patch test runs with its contact
+// surface split between the processes.
+#include <deal.II/base/mpi.h>
+
+#include <contact_dynamics/contact/contact_formulation.h>
+#include <contact_dynamics/simulator.h>
+
+#include "tests.h"
+
+using Sim     = ContactDynamics::Simulator<2>;
+using Columns = std::map<std::string, std::vector<double>>;
+using Changes = std::vector<std::pair<std::string, std::string>>;
+
+namespace
+{
+  double
+  max_abs(const std::vector<double> &values)
+  {
+    double m = 0;
+    for (const double x : values)
+      m = std::max(m, std::abs(x));
+    return m;
+  }
+
+  // largest difference over the steps, relative to the column's own scale
+  // (energies and work: to the largest kinetic + elastic energy; forces: to
+  // the largest contact force)
+  double
+  worst_difference(const Columns &parallel, const Columns &serial)
+  {
+    std::vector<double> energy;
+    for (unsigned int i = 0; i < serial.at("time").size(); ++i)
+      energy.push_back(serial.at("kinetic_energy")[i] +
+                       serial.at("elastic_energy")[i]);
+    const double energy_scale = std::max(max_abs(energy), 1e-300);
+    double       force_scale  = 1e-300;
+    for (const char *f : {"contact_force_x", "contact_force_y"})
+      if (serial.count(f))
+        force_scale = std::max(force_scale, max_abs(serial.at(f)));
+
+    double worst = 0;
+    for (const auto &column : serial)
+      {
+        const std::string &name = column.first;
+        if (name == "wall_time" || name == "final_residual" ||
+            name.find("newton") != std::string::npos)
+          continue; // differ with the order of the round-off
+        double scale = energy_scale;
+        if (name.find("force") != std::string::npos)
+          scale = force_scale;
+        else if (name.find("nodes") != std::string::npos || name == "step" ||
+                 name == "time" || name == "dt" || name == "time_step_cuts")
+          scale = 1; // counts and times: equal
+        const auto &p = parallel.at(name);
+        for (unsigned int i = 0; i < column.second.size(); ++i)
+          worst = std::max(worst, std::abs(p[i] - column.second[i]) / scale);
+      }
+    return worst;
+  }
+
+  void
+  compare(const std::string &name,
+          const std::string &file,
+          Changes            changes,
+          const double       tolerance = 1e-7)
+  {
+    const MPI_Comm world = MPI_COMM_WORLD;
+    changes.emplace_back("Output/VTU interval", "0");
+    Changes parallel_changes = changes, serial_changes = changes;
+    parallel_changes.emplace_back("Output/Output directory", name + "_np2");
+    serial_changes.emplace_back("Output/Output directory", name + "_np1");
+
+    std::vector<unsigned int> owned_nodes;
+    const Columns             parallel =
+      run_shipped<Sim>(file, parallel_changes, [&](const Sim &simulator) {
+        owned_nodes = dealii::Utilities::MPI::gather(
+          world,
+          simulator.get_contact()->n_owned_contact_nodes());
+      });
+    Columns serial;
+    if (dealii::Utilities::MPI::this_mpi_process(world) == 0)
+      serial =
+        run_shipped<Sim>(file, serial_changes, {}, nullptr, MPI_COMM_SELF);
+    MPI_Barrier(world);
+    if (dealii::Utilities::MPI::this_mpi_process(world) != 0)
+      return;
+
+    dealii::deallog << name << ": secondary nodes per process";
+    for (const unsigned int n : owned_nodes)
+      dealii::deallog << ' ' << n;
+    dealii::deallog << std::endl;
+    check_true(name + ": same steps",
+               parallel.at("time").size() == serial.at("time").size() &&
+                 serial.at("time").size() > 1);
+    const double       worst = worst_difference(parallel, serial);
+    std::ostringstream within;
+    within << tolerance;
+    check_true(name + ": statistics equal to serial within " + within.str(),
+               worst <= tolerance);
+    if (worst > tolerance)
+      dealii::deallog << "  worst relative difference " << worst << std::endl;
+    const auto &active = serial.at("active_contact_nodes");
+    check_true(name + ": in contact", max_abs(active) > 0);
+  }
+} // namespace
+
+int
+main()
+{
+  initlog();
+  check_true("two processes",
+             dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 2);
+
+  // contact surface split 5 / 3 by METIS
+  compare("patch_test_mortar", "prm/examples/patch_test.prm", {});
+  compare("patch_test_nts",
+          "prm/examples/patch_test.prm",
+          {{"Contact/Formulation", "nts"}});
+  // pressed, then sliding with Coulomb friction (all nodes slip)
+  for (const std::string formulation : {"mortar", "nts"})
+    compare("patch_test_friction_" + formulation,
+            "prm/examples/patch_test.prm",
+            {{"Contact/Formulation", formulation},
+             {"Contact/Friction coefficients", "0.3"},
+             {"Boundary conditions/Dirichlet",
+              "lower_bottom: xy: 0; upper_top: y: -1e-3*min(10*t, 1); "
+              "upper_top: x: 0.05*t"},
+             {"Time integration/Time step", "0.1"}});
+  compare("patch_test_mumps",
+          "prm/examples/patch_test.prm",
+          {{"Nonlinear solver/Linear solver", "MUMPS"}});
+  compare("bar_impact", "prm/examples/bar_impact.prm", {});
+  compare("bouncing_block_mortar",
+          "prm/bouncing_block/mortar_stabilized.prm",
+          {{"Time integration/End time", "1.5"}});
+  compare("bouncing_block_nts",
+          "prm/bouncing_block/nts.prm",
+          {{"Time integration/End time", "0.5"}});
+  compare("bouncing_block_gmres",
+          "prm/bouncing_block/mortar_stabilized.prm",
+          {{"Time integration/End time", "0.5"},
+           {"Nonlinear solver/Linear solver", "GMRES"}},
+          1e-6);
+  compare("ironing_mortar",
+          "prm/ironing/mortar.prm",
+          {{"Time integration/End time", "0.15"}});
+  compare("ironing_mortar_friction",
+          "prm/ironing/mortar_friction.prm",
+          {{"Time integration/End time", "0.12"}});
+  compare("ironing_nts_smoothed",
+          "prm/ironing/nts_smoothed.prm",
+          {{"Time integration/End time", "0.12"}});
+}
