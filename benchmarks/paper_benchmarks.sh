@@ -4,12 +4,15 @@
 # tables (doc/benchmarks-tables.md) and benchmarks/results/paper_benchmarks.csv.
 #
 # Usage: benchmarks/paper_benchmarks.sh [-j JOBS] [--only bouncing_block|ironing]
-#                                       [--plots-only]
+#                                       [--plots-only] [--np N]
 #   -j JOBS       simulations run at the same time (default 1: wall times are
 #                 then those of an idle machine; -j 2 halves the total on 2
 #                 cores, but each run is slower)
 #   --only NAME   run one benchmark only (the plots use what output/ holds)
 #   --plots-only  run nothing, plot what output/ holds
+#   --np N        run each simulation with mpirun -np N; results go to
+#                 output/npN/, the figures and tables to benchmarks/results/npN/
+#                 (the report in doc/ stays that of the serial runs)
 # Installs what is missing (as ./run.sh does, plus python3-numpy and
 # python3-matplotlib) and builds first. Each run writes output/<benchmark>_
 # <variant>/ with its screen log (run.log) and run_status.txt.
@@ -17,6 +20,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 jobs=1
+np=""
 only=""
 plots_only=0
 while [ $# -gt 0 ]; do
@@ -24,7 +28,8 @@ while [ $# -gt 0 ]; do
     -j) jobs="$2"; shift 2 ;;
     --only) only="$2"; shift 2 ;;
     --plots-only) plots_only=1; shift ;;
-    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
+    --np) np="$2"; shift 2 ;;
+    -h|--help) sed -n '2,19p' "$0"; exit 0 ;;
     *) echo "unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -32,6 +37,19 @@ case "$only" in ""|bouncing_block|ironing) ;;
   *) echo "--only $only: allowed are bouncing_block and ironing" >&2; exit 2 ;;
 esac
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "-j $jobs: a positive integer is needed" >&2; exit 2; }
+[[ -z "$np" || "$np" =~ ^[1-9][0-9]*$ ]] || { echo "--np $np: a positive integer is needed" >&2; exit 2; }
+launcher=()
+output_root=output
+plot_options=()
+if [ -n "$np" ]; then
+  launcher=(mpirun -np "$np")
+  output_root="output/np$np"
+  plot_options=(--output-root "$output_root"
+                --figures "benchmarks/results/np$np/figures"
+                --tables "benchmarks/results/np$np/benchmarks-tables.md"
+                --csv "benchmarks/results/np$np/paper_benchmarks.csv")
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+fi
 
 EXTRA_PACKAGES="python3-numpy python3-matplotlib" ./run.sh build
 
@@ -49,15 +67,24 @@ entry() { # file, entry name -> value of 'set name = value'
   sed -n "s|^ *set $2 *= *\(.*\)$|\1|p" "$1" | head -1
 }
 
+output_dir() { # benchmark/variant -> its output directory
+  echo "$output_root/$(basename "$(entry "prm/$1.prm" "Output directory")")"
+}
+
 run_one() { # benchmark/variant
   local prm="prm/$1.prm"
   local dir
-  dir=$(entry "$prm" "Output directory")
+  dir=$(output_dir "$1")
   rm -rf "$dir"
   mkdir -p "$dir"
+  if [ "$dir" != "$(entry "$prm" "Output directory")" ]; then
+    printf 'include %s\nsubsection Output\n  set Output directory = %s\nend\n' \
+      "$PWD/$prm" "$dir" > "$dir/run.prm"
+    prm="$dir/run.prm"
+  fi
   local start wall rc=0
   start=$(date +%s.%N)
-  build/contact-dynamics "$prm" > "$dir/run.log" 2>&1 || rc=$?
+  "${launcher[@]}" build/contact-dynamics "$prm" > "$dir/run.log" 2>&1 || rc=$?
   wall=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN {printf "%.1f", b - a}')
   local status=completed reason="reached the end time"
   if [ $rc -ne 0 ]; then
@@ -74,6 +101,7 @@ run_one() { # benchmark/variant
     echo "wall_time_s = $wall"
     echo "exit_code = $rc"
     echo "jobs = $jobs"
+    echo "processes = ${np:-1}"
   } > "$dir/run_status.txt"
   printf '   done %-32s %-9s %7s s  %s\n' "$1" "$status" "$wall" \
     "$([ $status = stopped ] && echo "($reason)")"
@@ -83,7 +111,7 @@ progress() { # one line per running variant: simulated time / end time
   local v
   for v in "$@"; do
     local prm="prm/$v.prm" dir
-    dir=$(entry "$prm" "Output directory")
+    dir=$(output_dir "$v")
     local t
     t=$(tail -1 "$dir/statistics.csv" 2>/dev/null | cut -d, -f2)
     printf '   ... %-32s t = %s of %s\n' "$v" "${t:-0}" "$(entry "$prm" "End time")"
@@ -119,5 +147,9 @@ if [ $plots_only -eq 0 ]; then
 fi
 
 echo "== Figures and tables"
-python3 benchmarks/paper_benchmarks.py
-echo "== Done in $(( $(date +%s) - total_start )) s: doc/figures/benchmarks/, doc/benchmarks-tables.md"
+python3 benchmarks/paper_benchmarks.py "${plot_options[@]}"
+if [ -n "$np" ]; then
+  echo "== Done in $(( $(date +%s) - total_start )) s: benchmarks/results/np$np/"
+else
+  echo "== Done in $(( $(date +%s) - total_start )) s: doc/figures/benchmarks/, doc/benchmarks-tables.md"
+fi
