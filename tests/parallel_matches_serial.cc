@@ -61,24 +61,6 @@ namespace
     return worst;
   }
 
-  // columns of a CSV file by name
-  Columns
-  read_csv(const std::string &filename)
-  {
-    std::ifstream in(filename);
-    std::string   line;
-    std::getline(in, line);
-    const auto names = dealii::Utilities::split_string_list(line, ',');
-    Columns    columns;
-    while (std::getline(in, line))
-      {
-        const auto values = dealii::Utilities::split_string_list(line, ',');
-        for (unsigned int i = 0; i < names.size() && i < values.size(); ++i)
-          columns[names[i]].push_back(std::stod(values[i]));
-      }
-    return columns;
-  }
-
   // the histories of the monitored nodes (pressure and gap), relative to
   // each column's largest value
   double
@@ -138,10 +120,11 @@ namespace
                worst <= tolerance);
     if (worst > tolerance)
       dealii::deallog << "  worst relative difference " << worst << std::endl;
-    const Columns history = read_csv(name + "_np1/contact_history.csv");
+    const Columns history = read_csv_columns(name + "_np1/contact_history.csv");
     if (history.size() > 1)
       check_true(name + ": monitored pressures and gaps equal to serial",
-                 history_difference(read_csv(name + "_np2/contact_history.csv"),
+                 history_difference(read_csv_columns(
+                                      name + "_np2/contact_history.csv"),
                                     history) <= 1e-6);
     const auto &active = serial.at("active_contact_nodes");
     check_true(name + ": in contact", max_abs(active) > 0);

@@ -82,6 +82,24 @@ mean_velocity_x(const Simulator &simulator, const unsigned int body)
   return momentum / mass;
 }
 
+// The columns of a CSV file (a header line of names, then numbers) by name.
+inline std::map<std::string, std::vector<double>>
+read_csv_columns(const std::string &filename)
+{
+  std::ifstream in(filename);
+  std::string   line;
+  std::getline(in, line);
+  const auto names = dealii::Utilities::split_string_list(line, ',');
+  std::map<std::string, std::vector<double>> columns;
+  while (std::getline(in, line))
+    {
+      const auto values = dealii::Utilities::split_string_list(line, ',');
+      for (unsigned int i = 0; i < names.size() && i < values.size(); ++i)
+        columns[names[i]].push_back(std::stod(values[i]));
+    }
+  return columns;
+}
+
 // Writes `text` to `filename` and reads it as the application would.
 inline void
 read_test_parameters(const std::string        &filename,
@@ -144,18 +162,7 @@ run_shipped(const std::string                                      &file,
 
   if (dealii::Utilities::MPI::this_mpi_process(comm) != 0)
     return {};
-  std::ifstream in(directory + "/statistics.csv");
-  std::string   line;
-  std::getline(in, line);
-  const auto names = dealii::Utilities::split_string_list(line, ',');
-  std::map<std::string, std::vector<double>> columns;
-  while (std::getline(in, line))
-    {
-      const auto values = dealii::Utilities::split_string_list(line, ',');
-      for (unsigned int i = 0; i < names.size() && i < values.size(); ++i)
-        columns[names[i]].push_back(std::stod(values[i]));
-    }
-  return columns;
+  return read_csv_columns(directory + "/statistics.csv");
 }
 
 // Time of the first row where column `name` is positive, or -1.
