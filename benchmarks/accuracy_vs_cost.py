@@ -249,8 +249,9 @@ def variant_label(meta):
         parts.append(meta["stabilization"])
     if meta.get("jacobian") == "approximate":
         parts.append("approx. J")
-    if meta.get("quadrature") not in (None, "", "-", 2, "2"):
-        parts.append(f"{meta['quadrature']} qp")
+    q = meta.get("quadrature")
+    if q not in (None, "", "-") and int(float(q)) != 2:
+        parts.append(f"{int(float(q))} qp")
     if meta.get("problem") == "bouncing_block" and str(meta.get("refinement")) in ("2", "2.0") \
             and meta.get("reference") not in (None, "", "(is a reference)"):
         parts.append("mesh x2")
@@ -917,9 +918,9 @@ def plot_pareto(rows, problem, path):
                if isinstance(r.get(e), float) and math.isfinite(r[e])]
         if len(positive) < len(vals):
             ax.axhline(floor, color="gray", lw=0.8, ls=":")
-            ax.annotate("error 0 (to output precision / step resolution)", (0.02, floor),
+            ax.annotate("error 0 (to output precision / step resolution)", (0.98, floor),
                         xycoords=("axes fraction", "data"), textcoords="offset points",
-                        xytext=(0, 3), fontsize=7, color="gray")
+                        xytext=(0, -9), fontsize=7, color="gray", ha="right")
         for lab, (col, mk) in styles.items():
             sel = [p for p in pts if p[2]["label"] == lab]
             done = [p for p in sel if str(p[2]["status"]).startswith("completed")]
@@ -1172,7 +1173,8 @@ def main():
         plot_pareto(rows, problem, args.figures / f"{problem}_pareto.png")
     plot_convergence(rows, "h", args.figures / "convergence_h.png")
     plot_convergence(rows, "dt", args.figures / "convergence_dt.png")
-    print(f"wrote {csv_path}, {args.results / 'accuracy_rates.csv'}, "
+    print(f"wrote {'' if args.plots_only else str(csv_path) + ', '}"
+          f"{args.results / 'accuracy_rates.csv'}, "
           f"{args.results / 'accuracy_vs_cost_tables.md'} and the figures in {args.figures}")
 
 
