@@ -1,12 +1,16 @@
 #!/usr/bin/env python3
 """Accuracy versus cost of the contact formulations and their settings.
 
-Runs the simulator over parameter sweeps of four problems that have an
-independent reference solution, measures the error, the wall time (median of
-repeated runs), the peak memory, Newton iterations and time-step cuts, and
-writes a CSV, Markdown tables, Pareto plots and convergence plots.
+Runs the simulator over parameter sweeps of five problems with an
+independent or a much finer reference solution, measures the errors, the
+wall time (median of repeated runs), the peak memory, Newton iterations and
+time-step cuts, and writes a CSV, Markdown tables, Pareto plots and
+convergence plots. One command:
 
-  python3 benchmarks/accuracy_vs_cost.py [--quick | --full] [--repeats N] [--jobs N]
+  python3 benchmarks/accuracy_vs_cost.py [--quick | --full] [--reuse]
+
+(quick: about 7-8 minutes on 2 idle cores; full: about 40 minutes, less with
+--reuse after a quick run).
 
 Problems, their reference and the swept settings:
 
@@ -17,30 +21,48 @@ Problems, their reference and the swept settings:
                   mortar segment quadrature points (full mode).
   bar_impact      prm/examples/bar_impact.prm; exact 1-D wave solution
                   (contact duration 2 L/c = 2, contact force rho c v0 h, no
-                  energy lost). Time step, elements along the bar,
-                  stabilization, formulation.
-  patch_test      prm/examples/patch_test.prm; exact uniform pressure 1000.
-                  Formulation, refinement factor.
+                  energy lost, striker end at u_x = -0.08 at t = 3). Time
+                  step, elements along the bar, stabilization, formulation.
+  patch_test      prm/examples/patch_test.prm; exact uniform pressure 1000
+                  and interface displacement u_y = -5e-4. Formulation,
+                  refinement factor.
   bouncing_block  prm/bouncing_block/mortar_stabilized.prm, shortened (1 s
                   quick, 4 s full); a reference run of the same formulation
                   family (mortar with persistency for both mortar variants,
                   NTS for NTS) with the smallest time step / 4 and refinement
                   factor 2. Time step, formulation / stabilization.
+  ironing         prm/ironing/{mortar,nts,nts_smoothed}.prm, frictionless,
+                  shortened (1 s quick, 2 s full: the tool indents and
+                  slides); reference: mortar with twice the refinement factor
+                  of the finest compared run and half its time step (quick:
+                  factor 0.5 runs against factor 1, dt 0.005; full: factors
+                  0.5 and 1 against factor 2, dt 0.005). Formulation,
+                  refinement factor, time step (mortar, full mode).
+
+Errors of every run (where the problem defines them): contact pressure
+(Hertz profile and peak, patch test, pressure history of a monitored node),
+half-width (Hertz), contact duration (bar), energy (bar: energy change;
+all: the energy balance error of statistics.csv), a displacement at a
+probe point (bar: striker end; patch test: interface; bouncing block: gap
+history of the block's bottom centre; ironing: final displacement of the
+tool tip) and contact force histories against the reference.
 
 Each run goes to benchmarks/results/accuracy/<run-id>/ (run.prm, run.log,
-statistics.csv, contact_surface CSVs where needed, run.json with the
-timings); VTU files are deleted. The results are
-benchmarks/results/accuracy_vs_cost.csv (one row per run),
-benchmarks/results/accuracy_rates.csv (fitted convergence rates),
-benchmarks/results/accuracy_vs_cost_tables.md, and the figures
-doc/figures/accuracy/<problem>_pareto.png, convergence_h.png,
+statistics.csv, contact_history.csv, the first and last contact_surface CSV
+where needed, run.json with the timings); VTU files are deleted. The
+results are benchmarks/results/accuracy_vs_cost.csv (one row per run, also
+accuracy_vs_cost_<mode>.csv), benchmarks/results/accuracy_rates.csv (fitted
+convergence rates), the Markdown tables benchmarks/results/
+accuracy_vs_cost_tables.md and doc/accuracy-vs-cost-tables.md, and the
+figures doc/figures/accuracy/<problem>_pareto.png, convergence_h.png,
 convergence_dt.png.
 
 Wall times are those of the whole process (start-up, mesh, output of the
 CSVs and of the first and last VTU files where the contact surface is
 needed); with --jobs > 1 runs share the cores and the times are not those
-of an idle machine. Needs numpy and matplotlib (Debian: apt-get install
-python3-numpy python3-matplotlib); `--help` lists every option.
+of an idle machine; the load average at the end is recorded. Needs numpy
+and matplotlib (Debian: apt-get install python3-numpy python3-matplotlib);
+`--help` lists every option.
 """
 import argparse
 import csv
@@ -57,23 +79,19 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
-try:
-    import numpy as np
-    import matplotlib
-except ImportError:
-    # A Python ahead of Debian's on PATH (pyenv, venv) may lack the packages.
-    system_python = "/usr/bin/python3"
-    if (os.path.exists(system_python) and "ACCURACY_VS_COST_REEXEC" not in os.environ
-            and os.path.realpath(sys.executable) != os.path.realpath(system_python)):
-        os.environ["ACCURACY_VS_COST_REEXEC"] = "1"
-        os.execv(system_python, [system_python] + sys.argv)
-    sys.exit("accuracy_vs_cost.py needs numpy and matplotlib: "
-             "apt-get install -y python3-numpy python3-matplotlib")
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from plot_env import np, plt  # noqa: E402  (numpy, matplotlib with Agg; re-exec if missing)
 
 REPO = Path(__file__).resolve().parent.parent
 NEVER = 1000000  # a VTU interval that writes only the first and the last step
+PROBLEMS = ["hertz", "bar_impact", "patch_test", "bouncing_block", "ironing"]
+IRONING_END = {"quick": 1.0, "full": 2.0}
+# probe points (reference coordinates, as in the shipped files' Monitored points)
+PROBE = {"bouncing_block": (-1.5, 0.0), "ironing": (1.2, 4.02)}
+# the part of an ironing history compared with the reference: after the
+# first contact has built up (contact starts at t = 0.04, the tool moves
+# down by t/2 and sideways by t)
+IRONING_FROM = 0.2
 
 # ---------------------------------------------------------------------------
 # Parameter files
@@ -304,9 +322,11 @@ def build_runs(mode):
                                 quadrature="-", refinement="", elements=n, dt=dt)
                     ch = formulation_changes(form, stabilization=stab, c_n=10)
                     ch.update({"Scene/Bar impact/Elements along bar": n,
-                               "Time integration/Time step": dt})
+                               "Time integration/Time step": dt,
+                               "Output/VTU interval": NEVER})
                     rid = f"bar_{form}_{stab}_n{n}_dt{dt:g}"
-                    runs.append(Run("bar_impact", rid, "prm/examples/bar_impact.prm", ch, meta))
+                    runs.append(Run("bar_impact", rid, "prm/examples/bar_impact.prm", ch, meta,
+                                    keep_surface=True))
 
     # Patch test: one quasi-static step
     for form in ["mortar", "nts"]:
@@ -365,6 +385,35 @@ def build_runs(mode):
         runs.append(Run("bouncing_block", f"bb_mortar_persistency_r2_dt{dt:g}_T{end:g}",
                         "prm/bouncing_block/mortar_stabilized.prm",
                         bb_changes("mortar", "persistency", dt, 2), meta))
+
+    # Ironing, frictionless, shortened, against a finer mortar reference.
+    # The shipped files differ only in the formulation block; their own
+    # c_n, capture tolerance, stabilization (mortar: persistency, NTS: none)
+    # and minimum time step are kept.
+    end = IRONING_END[mode]
+    factors = [0.5, 1] if full else [0.5]
+    ref_factor, ref_dt = 2 * max(factors), 0.005
+    files = {"mortar": "prm/ironing/mortar.prm", "nts": "prm/ironing/nts.prm",
+             "nts smoothed": "prm/ironing/nts_smoothed.prm"}
+    ref_id = f"ironref_mortar_r{ref_factor:g}_dt{ref_dt:g}_T{end:g}"
+
+    def iron_changes(dt, factor):
+        return {"Time integration/End time": end, "Time integration/Time step": dt,
+                "Scene/Refinement factor": factor, "Output/VTU interval": NEVER}
+    meta = dict(formulation="mortar", stabilization="persistency", jacobian="exact",
+                quadrature="-", refinement=ref_factor, elements="", dt=ref_dt, end_time=end)
+    runs.append(Run("ironing", ref_id, files["mortar"], iron_changes(ref_dt, ref_factor), meta,
+                    keep_surface=True, reference=True))
+    cases = [(form, f, 0.01) for f in factors for form in files]
+    if full:
+        cases.append(("mortar", 1, 0.02))
+    for form, f, dt in cases:
+        meta = dict(formulation=form, stabilization="persistency" if form == "mortar" else "none",
+                    jacobian="exact", quadrature="-", refinement=f, elements="", dt=dt,
+                    end_time=end, reference=ref_id)
+        rid = f"iron_{form.replace(' ', '_')}_r{f:g}_dt{dt:g}_T{end:g}"
+        runs.append(Run("ironing", rid, files[form], iron_changes(dt, f), meta,
+                        keep_surface=True))
     return runs
 
 
@@ -416,10 +465,10 @@ def clean_output(directory, keep_surface):
         p.unlink()
     for p in directory.glob("solution*.pvd"):
         p.unlink()
-    if keep_surface:  # only the last contact_surface CSV is used
-        surfaces = sorted(directory.glob("contact_surface-*.csv"))
-        for p in surfaces[:-1]:
-            p.unlink()
+    surfaces = sorted(directory.glob("contact_surface-*.csv"))
+    # only the first (reference positions) and the last contact_surface CSV are used
+    for p in (surfaces[1:-1] if keep_surface else surfaces):
+        p.unlink()
 
 
 def execute(run, args, exe, counter):
@@ -434,8 +483,12 @@ def execute(run, args, exe, counter):
             counter(run, reused=True)
             return
     run.dir.mkdir(parents=True, exist_ok=True)
-    for p in run.dir.glob("contact_surface-*.csv"):
-        p.unlink()
+    # outputs of an earlier run must not pass for this run's (a run that
+    # stops before writing them would otherwise be scored on old files)
+    for pattern in ("contact_surface-*.csv", "statistics.csv", "contact_history.csv",
+                    "solution*.vtu", "solution*.pvd", "run.json"):
+        for p in run.dir.glob(pattern):
+            p.unlink()
     (run.dir / "run.prm").write_text(text)
     walls, rss = [], []
     repeats = 1
@@ -483,9 +536,73 @@ def read_csv(path):
     return {n: data[:, i] for i, n in enumerate(names)}
 
 
-def last_surface(directory):
-    files = sorted(directory.glob("contact_surface-*.csv"))
-    return (read_csv(files[-1]), files[-1].name) if files else (None, None)
+def surface_files(directory):
+    return sorted(directory.glob("contact_surface-*.csv"))
+
+
+def last_surface(directory, stats):
+    """The contact_surface CSV of the last step, if the run wrote one (a run
+    that stopped early has only that of step 0, which must not be scored)."""
+    files = surface_files(directory)
+    if not files or not len(stats.get("step", [])):
+        return None, None
+    if int(files[-1].stem.split("-")[-1]) != int(stats["step"][-1]):
+        return None, None
+    return read_csv(files[-1]), files[-1].name
+
+
+def surface_displacement(directory, stats):
+    """(x, y of step 0, u_x, u_y at the last step) of the secondary nodes of
+    pair 0, or None (the CSVs list the nodes in the same order)."""
+    last, _ = last_surface(directory, stats)
+    files = surface_files(directory)
+    if last is None or len(files) < 2:
+        return None
+    first = read_csv(files[0])
+    a, b = first["pair"] == 0, last["pair"] == 0
+    if a.sum() != b.sum() or not np.array_equal(first["node"][a], last["node"][b]):
+        return None
+    return (first["x"][a], first["y"][a], last["x"][b] - first["x"][a],
+            last["y"][b] - first["y"][a])
+
+
+def read_history(path, point):
+    """time, pressure and gap of the monitored node nearest to `point` from
+    contact_history.csv (columns 'pressure(x y)', 'gap(x y)'), or None."""
+    if not path.is_file():
+        return None
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    if len(rows) < 2:
+        return None
+    names = rows[0]
+    probes = []
+    for i, n in enumerate(names):
+        m = re.match(r"pressure\(([-+0-9.eE]+) ([-+0-9.eE]+)\)", n.strip())
+        if m:
+            probes.append((math.hypot(float(m.group(1)) - point[0],
+                                      float(m.group(2)) - point[1]), i))
+    if not probes:
+        return None
+    i = min(probes)[1]
+    data = []
+    for row in rows[1:]:
+        if len(row) == len(names):
+            try:
+                data.append([float(row[0]), float(row[i]), float(row[i + 1])])
+            except ValueError:
+                pass
+    data = np.array(data, dtype=float).reshape(-1, 3)
+    return dict(time=data[:, 0], pressure=data[:, 1], gap=data[:, 2])
+
+
+def energy_balance_error(stats):
+    """max |energy balance error| over the run relative to max (kinetic + elastic)."""
+    e = stats.get("energy_balance_error")
+    if e is None or not len(e):
+        return math.nan
+    scale = np.max(np.abs(stats["kinetic_energy"] + stats["elastic_energy"]))
+    return float(np.max(np.abs(e)) / scale) if scale > 0 else math.nan
 
 
 def tributary_lengths(x):
@@ -500,9 +617,9 @@ def tributary_lengths(x):
 
 def hertz_errors(directory, stats):
     """Half-width, peak pressure and profile L2 errors against Hertz (as tests/hertz_cylinder.cc)."""
-    s, name = last_surface(directory)
+    s, name = last_surface(directory, stats)
     out = {}
-    if s is None or not len(stats.get("time", [])):
+    if s is None:
         return out
     pair0 = s["pair"] == 0
     order = np.argsort(s["x"][pair0])
@@ -532,7 +649,19 @@ def hertz_errors(directory, stats):
 BAR = dict(L=1.0, c=1.0, v0=0.1, h=0.1, gap=0.01, rho=1.0)
 
 
-def bar_errors(stats, dt):
+def bar_end_displacement(T):
+    """Exact u_x of the striker's contact end at time T: free flight, at rest
+    at the wall for 2 L / c, then rebound with -v0 (stress-free)."""
+    t0 = BAR["gap"] / BAR["v0"]
+    t1 = t0 + 2 * BAR["L"] / BAR["c"]
+    if T <= t0:
+        return BAR["v0"] * T
+    if T <= t1:
+        return BAR["gap"]
+    return BAR["gap"] - BAR["v0"] * (T - t1)
+
+
+def bar_errors(directory, stats, dt):
     t, act = stats["time"], stats["active_contact_nodes"] > 0
     out = {}
     ke0 = stats["kinetic_energy"][0]
@@ -562,29 +691,60 @@ def bar_errors(stats, dt):
     avg, ex2, w2 = (force[1:] + force[:-1]) / 2, (exact[1:] + exact[:-1]) / 2, (w[1:] + w[:-1]) / 2
     out["err_force_avg2"] = math.sqrt(np.sum(w2 * (avg - ex2) ** 2) / np.sum(w2 * ex2 ** 2))
     out["impulse_change"] = np.sum(w * force) / (2 * BAR["rho"] * BAR["L"] * BAR["h"] * BAR["v0"]) - 1
+    u = surface_displacement(directory, stats)
+    if u is not None:
+        exact = bar_end_displacement(t[-1])
+        out["err_probe_displacement"] = abs(float(np.mean(u[2])) - exact) / abs(exact)
     return out
 
 
-def patch_errors(directory):
-    s, name = last_surface(directory)
+def patch_errors(directory, stats):
+    s, name = last_surface(directory, stats)
     if s is None:
         return {}
     act = s["active"] > 0
     if not act.any():
         return dict(err_pressure_max=math.nan, active_nodes=0)
     x = np.sort(s["x"][act])
-    return dict(err_pressure_max=float(np.max(np.abs(s["pressure"][act] - 1000)) / 1000),
-                h=float(np.median(np.diff(x))) if len(x) > 1 else math.nan,
-                active_nodes=int(act.sum()), surface_csv=name)
+    out = dict(err_pressure_max=float(np.max(np.abs(s["pressure"][act] - 1000)) / 1000),
+               h=float(np.median(np.diff(x))) if len(x) > 1 else math.nan,
+               active_nodes=int(act.sum()), surface_csv=name)
+    # the interface (secondary: bottom of the upper block) moves down by
+    # half the applied 1e-3: both blocks are 0.5 high, equal E, nu = 0
+    u = surface_displacement(directory, stats)
+    if u is not None:
+        out["err_probe_displacement"] = float(np.max(np.abs(u[3] + 5e-4)) / 5e-4)
+    return out
 
 
-def history_error(stats, ref, column):
-    """Relative L2-in-time error of a column against the reference interpolated onto the run's times."""
-    t, y = stats["time"][1:], stats[column][1:]
-    w = stats["dt"][1:]
-    yr = np.interp(t, ref["time"], ref[column])
-    den = np.sum(w * yr ** 2)
-    return math.sqrt(np.sum(w * (y - yr) ** 2) / den) if den > 0 else math.nan
+def ironing_probe_displacement(directory, stats):
+    """Displacement of the secondary node nearest the probe point at the last step."""
+    u = surface_displacement(directory, stats)
+    if u is None:
+        return None
+    x0, y0, ux, uy = u
+    j = int(np.argmin(np.hypot(x0 - PROBE["ironing"][0], y0 - PROBE["ironing"][1])))
+    return np.array([ux[j], uy[j]])
+
+
+def relative_l2(t, y, tr, yr, t_from=-math.inf):
+    """Relative L2-in-time error of y(t) against yr(tr) interpolated onto t,
+    over t >= t_from (step lengths as weights; a run that stopped early is
+    compared over the part it computed)."""
+    t, y = np.asarray(t, float), np.asarray(y, float)
+    w = np.diff(t, prepend=t[0] if len(t) else 0.0)
+    keep = t >= t_from
+    if keep.sum() < 2:
+        return math.nan
+    yi = np.interp(t[keep], tr, yr)
+    den = np.sum(w[keep] * yi ** 2)
+    return math.sqrt(np.sum(w[keep] * (y[keep] - yi) ** 2) / den) if den > 0 else math.nan
+
+
+def history_error(stats, ref, column, t_from=-math.inf):
+    """Relative L2-in-time error of a statistics column against the reference
+    interpolated onto the run's times (step 0 left out)."""
+    return relative_l2(stats["time"][1:], stats[column][1:], ref["time"], ref[column], t_from)
 
 
 def history_error_avg2(stats, ref, column):
@@ -615,16 +775,20 @@ COLUMNS = ["run_id", "problem", "formulation", "stabilization", "jacobian", "qua
            "impulse_change", "contact_spans",
            "err_pressure_max",
            "err_force_history", "err_force_history_avg2", "err_kinetic_energy_history",
-           "err_force_vs_mortar_ref", "err_kinetic_energy_vs_mortar_ref", "reference",
+           "err_force_vs_mortar_ref", "err_kinetic_energy_vs_mortar_ref",
+           "err_force_x_history", "err_probe_pressure_history", "err_probe_gap_history",
+           "err_probe_displacement", "err_energy_balance", "load_P", "hertz_a", "reference",
            "steps", "newton", "newton_per_step", "cuts", "wall_median_s", "wall_min_s", "repeats",
            "peak_memory_mb", "status", "message"]
 
 
 def collect(runs):
-    stats_of = {}
+    stats_of, history_of = {}, {}
     for run in runs:
         path = run.dir / "statistics.csv"
         stats_of[run.id] = read_csv(path) if path.is_file() else {}
+        if run.problem in PROBE:
+            history_of[run.id] = read_history(run.dir / "contact_history.csv", PROBE[run.problem])
     for run in runs:
         st, tm = stats_of[run.id], run.timing
         r = dict(run_id=run.id, problem=run.problem, **run.meta)
@@ -646,12 +810,33 @@ def collect(runs):
         else:
             r["status"] = "failed"
         if st and len(st.get("time", [])) > 1:
+            r["err_energy_balance"] = energy_balance_error(st)
             if run.problem == "hertz":
                 r.update(hertz_errors(run.dir, st))
             elif run.problem == "bar_impact":
-                r.update(bar_errors(st, run.meta["dt"]))
+                r.update(bar_errors(run.dir, st, run.meta["dt"]))
             elif run.problem == "patch_test":
-                r.update(patch_errors(run.dir))
+                r.update(patch_errors(run.dir, st))
+            elif run.problem == "ironing" and not run.reference:
+                ref = stats_of.get(run.meta["reference"], {})
+                if ref and len(ref.get("time", [])) > 1:
+                    r["err_force_history"] = history_error(st, ref, "contact_force_y", IRONING_FROM)
+                    r["err_force_x_history"] = history_error(st, ref, "contact_force_x",
+                                                             IRONING_FROM)
+                h, hr = history_of.get(run.id), history_of.get(run.meta["reference"])
+                if h is not None and hr is not None:
+                    r["err_probe_pressure_history"] = relative_l2(
+                        h["time"], h["pressure"], hr["time"], hr["pressure"], IRONING_FROM)
+                ref_run = next((x for x in runs if x.id == run.meta["reference"]), None)
+                u = ironing_probe_displacement(run.dir, st)
+                ur = ironing_probe_displacement(ref_run.dir, ref) if ref_run and ref else None
+                if u is not None and ur is not None:
+                    T = float(st["time"][-1])
+                    # relative to the tool's deformation at the probe (the
+                    # top is moved by (T, -T/2), the rigid part is exact)
+                    deformation = ur - np.array([T, -min(T, 2.0) / 2])
+                    r["err_probe_displacement"] = float(np.linalg.norm(u - ur)
+                                                        / np.linalg.norm(deformation))
             elif run.problem == "bouncing_block" and not run.reference:
                 ref = stats_of.get(run.meta["reference"], {})
                 mref = stats_of.get(run.meta["mortar_reference"], {})
@@ -662,6 +847,12 @@ def collect(runs):
                 if mref and len(mref.get("time", [])) > 1:
                     r["err_force_vs_mortar_ref"] = history_error(st, mref, "contact_force_y")
                     r["err_kinetic_energy_vs_mortar_ref"] = history_error(st, mref, "kinetic_energy")
+                h, hr = history_of.get(run.id), history_of.get(run.meta["reference"])
+                if h is not None and hr is not None:
+                    r["err_probe_pressure_history"] = relative_l2(h["time"], h["pressure"],
+                                                                  hr["time"], hr["pressure"])
+                    r["err_probe_gap_history"] = relative_l2(h["time"], h["gap"],
+                                                             hr["time"], hr["gap"])
         if run.problem == "bar_impact":
             r["h"] = BAR["L"] / run.meta["elements"]
         if run.reference:
@@ -747,36 +938,48 @@ def tables(rows):
     hz = by("hertz")
     if hz:
         out.append("### Hertz (errors against the Hertz formulas for the measured load)\n")
-        out.append(md_table(["variant", "factor", "h", "a", "p0", "profile L2", "Newton", "cuts",
-                             "wall (s)", "MB", "status"],
+        out.append("Signed errors (+: too large). Hertz half-width a_Hertz and load P per unit "
+                   "length in the last columns but four.\n")
+        out.append(md_table(["variant", "factor", "h", "a", "p0", "profile L2", "a_Hertz", "P",
+                             "Newton", "cuts", "wall (s)", "MB", "status"],
                             [[r["label"], fmt(r["refinement"]), fmt(r.get("h")),
-                              pct(r.get("err_half_width")), pct(r.get("err_peak_pressure")),
-                              pct(r.get("err_profile_l2"))] + common(r) for r in hz]))
+                              spct(r.get("err_half_width")), spct(r.get("err_peak_pressure")),
+                              pct(r.get("err_profile_l2")), fmt(r.get("hertz_a")),
+                              fmt(r.get("load_P"))] + common(r) for r in hz]))
     bar = by("bar_impact")
     if bar:
         out.append("\n### Bar impact (errors against the exact 1-D solution)\n")
         out.append(md_table(["variant", "elements", "dt", "c dt/h", "duration", "energy change",
-                             "force L2", "force L2, 2-step avg", "impulse change", "spans",
+                             "energy balance", "force L2", "force L2, 2-step avg",
+                             "impulse change", "end u_x", "spans",
                              "Newton", "cuts", "wall (s)", "MB", "status"],
                             [[r["label"], fmt(r["elements"]), fmt(r["dt"]),
                               fmt(r["dt"] * r["elements"]),
                               pct(r.get("err_duration")), spct(r.get("energy_change")),
+                              pct(r.get("err_energy_balance")),
                               pct(r.get("err_force_l2")), pct(r.get("err_force_avg2")),
-                              spct(r.get("impulse_change")), fmt(r.get("contact_spans"))]
+                              spct(r.get("impulse_change")), pct(r.get("err_probe_displacement")),
+                              fmt(r.get("contact_spans"))]
                              + common(r) for r in bar]))
     pt = by("patch_test")
     if pt:
         out.append("\n### Patch test (max relative pressure error over active nodes)\n")
-        out.append(md_table(["variant", "factor", "h", "max |p - 1000| / 1000", "Newton", "cuts",
+        out.append(md_table(["variant", "factor", "h", "max |p - 1000| / 1000",
+                             "max interface u_y error", "Newton", "cuts",
                              "wall (s)", "MB", "status"],
                             [[r["label"], fmt(r["refinement"]), fmt(r.get("h")),
-                              pct(r.get("err_pressure_max"))] + common(r) for r in pt]))
+                              pct(r.get("err_pressure_max")), pct(r.get("err_probe_displacement"))]
+                             + common(r) for r in pt]))
     bb = by("bouncing_block")
     if bb:
         out.append("\n### Bouncing block (relative L2-in-time errors against the fine reference)\n")
+        out.append("Probe: the monitored node at the block's bottom centre (-1.5, 0); its gap "
+                   "is the block's height above the substrate. Energy balance: max |balance "
+                   "error| / max (kinetic + elastic energy) of the run itself.\n")
         out.append(md_table(["variant", "dt", "factor", "F_y", "F_y 2-step avg", "KE",
                              "F_y vs mortar ref",
-                             "KE vs mortar ref", "reference", "Newton", "cuts", "wall (s)", "MB",
+                             "KE vs mortar ref", "probe p", "probe gap", "energy balance",
+                             "reference", "Newton", "cuts", "wall (s)", "MB",
                              "status"],
                             [[r["label"], fmt(r["dt"]), fmt(r["refinement"]),
                               pct(r.get("err_force_history")),
@@ -784,7 +987,28 @@ def tables(rows):
                               pct(r.get("err_kinetic_energy_history")),
                               pct(r.get("err_force_vs_mortar_ref")),
                               pct(r.get("err_kinetic_energy_vs_mortar_ref")),
+                              pct(r.get("err_probe_pressure_history")),
+                              pct(r.get("err_probe_gap_history")),
+                              pct(r.get("err_energy_balance")),
                               r.get("reference", "")] + common(r) for r in bb]))
+    ir = by("ironing")
+    if ir:
+        out.append("\n### Ironing (relative L2-in-time errors for t >= %g against the fine "
+                   "mortar reference)\n" % IRONING_FROM)
+        out.append("F_y, F_x: total contact force on the tool; probe p: contact pressure of the "
+                   "tool-tip node (1.2, 4.02); probe u: its displacement at the end relative to "
+                   "the tool's deformation there (displacement minus the prescribed motion of "
+                   "the top); energy balance: max |balance error| / max (kinetic + elastic).\n")
+        out.append(md_table(["variant", "factor", "dt", "F_y", "F_x", "probe p", "probe u",
+                             "energy balance", "Newton", "cuts", "wall (s)", "MB", "status"],
+                            [[r["label"] + (" (reference)" if r.get("reference") ==
+                                            "(is a reference)" else ""),
+                              fmt(r["refinement"]), fmt(r["dt"]),
+                              pct(r.get("err_force_history")),
+                              pct(r.get("err_force_x_history")),
+                              pct(r.get("err_probe_pressure_history")),
+                              pct(r.get("err_probe_displacement")),
+                              pct(r.get("err_energy_balance"))] + common(r) for r in ir]))
     return "\n".join(out) + "\n"
 
 
@@ -844,10 +1068,36 @@ def convergence_series(rows):
           and r.get("reference") != "(is a reference)"]
     for lab in sorted({r["label"] for r in bb}):
         rs = sorted([r for r in bb if r["label"] == lab], key=lambda r: r["dt"])
-        for e in ["err_force_history", "err_force_history_avg2", "err_kinetic_energy_history"]:
+        for e in ["err_force_history", "err_force_history_avg2", "err_kinetic_energy_history",
+                  "err_probe_gap_history"]:
             series.append(("dt", "bouncing_block", e, lab, [r["dt"] for r in rs],
                            [num(r.get(e)) for r in rs]))
+    ir = [r for r in done if r["problem"] == "ironing" and r.get("reference")
+          and r.get("reference") != "(is a reference)"]
+    for lab in sorted({r["label"] for r in ir}):
+        rs = sorted([r for r in ir if r["label"] == lab and r["dt"] == 0.01],
+                    key=lambda r: r["refinement"], reverse=True)
+        if len(rs) > 1:  # h of the substrate's top: 12 / (200 factor)
+            for e in ["err_force_history", "err_force_x_history", "err_probe_pressure_history",
+                      "err_probe_displacement"]:
+                series.append(("h", "ironing", e, lab, [0.06 / r["refinement"] for r in rs],
+                               [num(r.get(e)) for r in rs]))
+        rs = sorted([r for r in ir if r["label"] == lab and r["refinement"] == 1],
+                    key=lambda r: r["dt"])
+        if len(rs) > 1:
+            for e in ["err_force_history", "err_probe_pressure_history"]:
+                series.append(("dt", "ironing", e, lab, [r["dt"] for r in rs],
+                               [num(r.get(e)) for r in rs]))
     return series
+
+
+def monotone(ys):
+    """'yes' if |error| decreases with every refinement (xs ascending: |ys| ascending)."""
+    a = np.abs(np.asarray(ys, float))
+    a = a[np.isfinite(a)]
+    if len(a) < 2:
+        return "–"
+    return "yes" if np.all(np.diff(a) > 0) else "no"
 
 
 def rates(rows):
@@ -855,6 +1105,7 @@ def rates(rows):
     for kind, problem, err, lab, xs, ys in convergence_series(rows):
         slope, n = fit_slope(xs, ys)
         out.append(dict(kind=kind, problem=problem, error=err, variant=lab, slope=slope, points=n,
+                        monotone=monotone(ys),
                         x=" ".join(fmt(x) for x in xs), err=" ".join(fmt(y) for y in ys)))
     return out
 
@@ -874,12 +1125,27 @@ ERROR_NAMES = {"err_profile_l2": "Hertz: profile L2 error", "err_half_width": "H
                "err_force_history_avg2": "block: F_y history error, 2-step average",
                "err_pressure_max": "patch test: max pressure error",
                "err_force_history": "block: F_y history error (L2 in time)",
-               "err_kinetic_energy_history": "block: kinetic energy history error"}
+               "err_kinetic_energy_history": "block: kinetic energy history error",
+               "err_probe_gap_history": "block: probe gap (height) history error",
+               "err_force_x_history": "ironing: F_x history error",
+               "err_probe_pressure_history": "ironing: tool-tip pressure history error",
+               "err_probe_displacement": "probe displacement error"}
 PARETO = {"hertz": ["err_profile_l2", "err_half_width", "err_peak_pressure"],
-          "bar_impact": ["err_energy", "err_duration", "err_force_l2", "err_force_avg2"],
-          "patch_test": ["err_pressure_max"],
+          "bar_impact": ["err_energy", "err_duration", "err_force_avg2", "err_probe_displacement"],
+          "patch_test": ["err_pressure_max", "err_probe_displacement"],
           "bouncing_block": ["err_force_history", "err_force_history_avg2",
-                             "err_kinetic_energy_history"]}
+                             "err_kinetic_energy_history", "err_probe_gap_history"],
+          "ironing": ["err_force_history", "err_force_x_history", "err_probe_pressure_history",
+                      "err_probe_displacement"]}
+# the same error key means something else per problem
+TITLES = {("ironing", "err_force_history"): "ironing: F_y history error (t >= %g)" % IRONING_FROM,
+          ("ironing", "err_probe_displacement"): "ironing: tool-tip displacement error (end)",
+          ("bar_impact", "err_probe_displacement"): "bar: striker end u_x error (t = 3)",
+          ("patch_test", "err_probe_displacement"): "patch test: max interface u_y error"}
+
+
+def error_name(problem, err):
+    return TITLES.get((problem, err), ERROR_NAMES[err])
 FLOOR = 1e-16
 
 
@@ -951,10 +1217,14 @@ def plot_pareto(rows, problem, path):
                 for p in front:
                     ax.annotate(f"dt {p[2]['dt']:g}", (p[0], p[1]),
                                 textcoords="offset points", xytext=(4, 4), fontsize=7)
+        if problem == "ironing":  # few runs: name them all
+            for p in pts:
+                ax.annotate(f"x{p[2]['refinement']:g}, dt {p[2]['dt']:g}", (p[0], p[1]),
+                            textcoords="offset points", xytext=(4, -9), fontsize=6)
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("wall time of the run (s, median)")
-        ax.set_ylabel(ERROR_NAMES[e] + " (relative)")
+        ax.set_ylabel(error_name(problem, e) + " (relative)")
         ax.grid(True, which="both", alpha=0.3)
     axes[0][0].legend(fontsize=7, loc="best")
     fig.suptitle(f"{problem.replace('_', ' ')}: accuracy versus cost (2 cores, one run at a time)",
@@ -975,7 +1245,9 @@ def plot_convergence(rows, kind, path):
         panels = [p for p in panels if p in [("hertz", "err_profile_l2"), ("hertz", "err_half_width"),
                                              ("hertz", "err_peak_pressure"),
                                              ("bar_impact", "err_energy"),
-                                             ("bar_impact", "err_force_avg2")]]
+                                             ("bar_impact", "err_force_avg2"),
+                                             ("ironing", "err_force_history"),
+                                             ("ironing", "err_probe_pressure_history")]]
     if not panels:
         return
     ncol = min(3, len(panels))
@@ -1010,7 +1282,7 @@ def plot_convergence(rows, kind, path):
                       label=f"{lab}: slope {slope:.2f}" if n >= 2 else lab)
         ax.set_xlabel("element size h along the contact" if kind == "h" else "time step dt")
         ax.set_ylabel("relative error")
-        ax.set_title(ERROR_NAMES[err], fontsize=9)
+        ax.set_title(error_name(problem, err), fontsize=9)
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=6)
     for ax in list(axes.flat)[len(panels):]:
@@ -1027,8 +1299,10 @@ def plot_convergence(rows, kind, path):
 def parse_args():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                  formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog="Quick mode takes about 6-7 minutes on 2 idle cores; "
-                                        "full mode is far longer (see doc/accuracy-vs-cost.md).")
+                                 epilog="Quick mode takes about 8 minutes on 2 cores; full mode "
+                                        "about 40 (see doc/accuracy-vs-cost.md). The module "
+                                        "docstring (top of the file) describes problems, "
+                                        "references and outputs.")
     mode = ap.add_mutually_exclusive_group()
     mode.add_argument("--quick", dest="mode", action="store_const", const="quick",
                       help="the smaller sweep (default)")
@@ -1043,7 +1317,7 @@ def parse_args():
     ap.add_argument("--jobs", type=int, default=1,
                     help="simulations at the same time (default 1; more spoils the timings)")
     ap.add_argument("--only", default="",
-                    help="comma-separated problems: hertz, bar_impact, patch_test, bouncing_block")
+                    help="comma-separated problems: " + ", ".join(PROBLEMS))
     ap.add_argument("--reuse", action="store_true",
                     help="keep the results of runs whose parameters and executable are unchanged")
     ap.add_argument("--plots-only", action="store_true",
@@ -1056,9 +1330,15 @@ def parse_args():
     ap.add_argument("--self-test", action="store_true", help="test the parameter-file editor")
     ap.add_argument("--timeout", type=float, default=3600,
                     help="kill a run after this many seconds (default 3600)")
-    ap.add_argument("--exe", type=Path, default=REPO / "build" / "contact-dynamics")
-    ap.add_argument("--results", type=Path, default=REPO / "benchmarks" / "results")
-    ap.add_argument("--figures", type=Path, default=REPO / "doc" / "figures" / "accuracy")
+    ap.add_argument("--exe", type=Path, default=REPO / "build" / "contact-dynamics",
+                    help="the simulator (default %(default)s)")
+    ap.add_argument("--results", type=Path, default=REPO / "benchmarks" / "results",
+                    help="run directories, CSVs and tables (default %(default)s)")
+    ap.add_argument("--figures", type=Path, default=REPO / "doc" / "figures" / "accuracy",
+                    help="the PNG figures (default %(default)s)")
+    ap.add_argument("--doc-tables", type=Path, default=REPO / "doc" / "accuracy-vs-cost-tables.md",
+                    help="a copy of the tables for the documentation, written after a run of "
+                         "every problem and with --plots-only (default %(default)s)")
     args = ap.parse_args()
     if args.repeats < 1 or args.jobs < 1:
         ap.error("--repeats and --jobs need a positive integer")
@@ -1133,7 +1413,7 @@ def main():
         elapsed = time.perf_counter() - start
         print(f"all runs: {elapsed:.0f} s ({elapsed / 60:.1f} min)", flush=True)
         # the table in a fixed order: by problem, then as built
-        order = {p: i for i, p in enumerate(["hertz", "bar_impact", "patch_test", "bouncing_block"])}
+        order = {p: i for i, p in enumerate(PROBLEMS)}
         runs.sort(key=lambda r: order[r.problem])
         rows = collect(runs)
         if args.only and csv_path.is_file():  # keep the other problems' rows
@@ -1155,18 +1435,41 @@ def main():
     args.results.mkdir(parents=True, exist_ok=True)
     with open(args.results / "accuracy_rates.csv", "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=["kind", "problem", "error", "variant", "slope", "points",
-                                          "x", "err"])
+                                          "monotone", "x", "err"])
         w.writeheader()
         for r in rate_rows:
             w.writerow({**r, "slope": f"{r['slope']:.3f}"})
     text += "\n### Fitted convergence rates (slope of log error against log h or log dt)\n\n"
-    text += md_table(["in", "problem", "error", "variant", "slope", "points", "x", "errors"],
+    text += ("Least-squares slope of log |error| against log h or log dt. 'monotone': the "
+             "|error| falls at every refinement; where it does not (a sign change, an error "
+             "floor) the slope is no convergence rate.\n\n")
+    text += md_table(["in", "problem", "error", "variant", "slope", "points", "monotone", "x",
+                      "errors"],
                      [[r["kind"], r["problem"], r["error"], r["variant"],
                        f"{r['slope']:.2f}" if math.isfinite(r["slope"]) else "–", r["points"],
-                       r["x"], r["err"]] for r in rate_rows]) + "\n"
+                       r["monotone"], r["x"], r["err"]] for r in rate_rows]) + "\n"
     (args.results / "accuracy_vs_cost_tables.md").write_text(text)
     if not args.plots_only and not args.only:
         (args.results / f"accuracy_vs_cost_tables_{args.mode}.md").write_text(text)
+    if not args.only:
+        info_path = args.results / f"accuracy_run_info_{args.mode}.json"
+        source = args.csv or csv_path
+        header = ["# Accuracy versus cost: generated tables", "",
+                  "Written by `benchmarks/accuracy_vs_cost.py` from `%s`; do not edit. "
+                  "Explanations: [accuracy-vs-cost.md](accuracy-vs-cost.md)." % source.name, ""]
+        # the run information belongs to these rows after a run, or with
+        # --plots-only to the per-mode CSV of the mode given
+        if info_path.is_file() and (not args.plots_only
+                                    or source.name == f"accuracy_vs_cost_{args.mode}.csv"):
+            info = json.loads(info_path.read_text())
+            header += ["Mode `%s`, %d runs (%d reused from an earlier run with the same "
+                       "parameters and binary), %.0f s of runs, one at a time (jobs = %d), "
+                       "finished %s, load average at the end %s." % (
+                           info["mode"], info["runs"], info["reused"], info["seconds"],
+                           info["jobs"], info["date"],
+                           " ".join("%.2f" % x for x in info["load_average_at_end"])), ""]
+        args.doc_tables.parent.mkdir(parents=True, exist_ok=True)
+        args.doc_tables.write_text("\n".join(header) + text)
     print(text)
     args.figures.mkdir(parents=True, exist_ok=True)
     for problem in PARETO:
