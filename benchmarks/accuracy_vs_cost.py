@@ -1067,8 +1067,9 @@ def convergence_series(rows):
     pt = [r for r in done if r["problem"] == "patch_test"]
     for lab in sorted({r["label"] for r in pt}):
         rs = sorted([r for r in pt if r["label"] == lab], key=lambda r: num(r.get("h")))
-        series.append(("h", "patch_test", "err_pressure_max", lab, [num(r.get("h")) for r in rs],
-                       [num(r.get("err_pressure_max")) for r in rs]))
+        for e in ["err_pressure_max", "err_probe_displacement"]:
+            series.append(("h", "patch_test", e, lab, [num(r.get("h")) for r in rs],
+                           [num(r.get(e)) for r in rs]))
     bb = [r for r in done if r["problem"] == "bouncing_block" and r.get("reference")
           and r.get("reference") != "(is a reference)"]
     for lab in sorted({r["label"] for r in bb}):
