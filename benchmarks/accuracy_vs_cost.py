@@ -1284,7 +1284,10 @@ def plot_convergence(rows, kind, path):
             if ok.sum() < 1:
                 continue
             slope, n = fit_slope(xs, ys)
-            col, mk = styles[lab.replace("mortar = NTS", "mortar").split(" (")[0]]
+            if monotone(ys[ok]) == "no":  # a sign change or a floor: no rate
+                lab += " [not monotone]"
+            col, mk = styles[lab.replace("mortar = NTS", "mortar").split(" (")[0]
+                             .split(" [")[0]]
             ax.loglog(xs[ok], ys[ok], marker=mk, color=col, lw=1,
                       ls="--" if "c dt/h" in lab else "-",
                       label=f"{lab}: slope {slope:.2f}" if n >= 2 else lab)
