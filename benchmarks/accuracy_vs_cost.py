@@ -9,7 +9,7 @@ convergence plots. One command:
 
   python3 benchmarks/accuracy_vs_cost.py [--quick | --full] [--reuse]
 
-(quick: about 7-8 minutes on 2 idle cores; full: about 40 minutes, less with
+(quick: about 8 minutes on 2 cores; full: about 40 minutes, less with
 --reuse after a quick run).
 
 Problems, their reference and the swept settings:
