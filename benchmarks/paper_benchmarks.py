@@ -16,25 +16,12 @@ Needs numpy and matplotlib (Debian: apt-get install python3-numpy python3-matplo
 import argparse
 import csv
 import math
-import os
 import re
 import sys
 from pathlib import Path
 
-try:
-    import numpy as np
-    import matplotlib
-except ImportError:
-    # A Python ahead of Debian's on PATH (pyenv, venv) may lack the packages.
-    system_python = "/usr/bin/python3"
-    if (os.path.exists(system_python) and "PAPER_BENCHMARKS_REEXEC" not in os.environ
-            and os.path.realpath(sys.executable) != os.path.realpath(system_python)):
-        os.environ["PAPER_BENCHMARKS_REEXEC"] = "1"
-        os.execv(system_python, [system_python] + sys.argv)
-    sys.exit("paper_benchmarks.py needs numpy and matplotlib: "
-             "apt-get install -y python3-numpy python3-matplotlib")
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from plot_env import np, plt  # noqa: E402  (numpy, matplotlib with Agg; re-exec if missing)
 from matplotlib.patches import Patch  # noqa: E402
 
 REPO = Path(__file__).resolve().parent.parent
