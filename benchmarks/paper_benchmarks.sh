@@ -29,7 +29,7 @@ while [ $# -gt 0 ]; do
     --only) only="$2"; shift 2 ;;
     --plots-only) plots_only=1; shift ;;
     --np) np="$2"; shift 2 ;;
-    -h|--help) sed -n '2,19p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
     *) echo "unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
