@@ -416,7 +416,8 @@ namespace ContactDynamics
                                      "energy_balance_error",
                                      "wall_time",
                                      "final_residual",
-                                     "time_step_cuts"};
+                                     "time_step_cuts",
+                                     "linear_iterations"};
     if (contact)
       for (const auto &c : contact->statistics_columns())
         columns.push_back(c);
@@ -640,6 +641,7 @@ namespace ContactDynamics
     ++step;
     structure_changed = false;
     cumulative_newton_iterations += result.iterations;
+    linear_iterations = result.linear_iterations;
     output_step(result.iterations, result.final_residual, false);
     return true;
   }
@@ -663,7 +665,8 @@ namespace ContactDynamics
                             energies.error(),
                             wall_timer.wall_time(),
                             final_residual,
-                            double(time_step_cuts)};
+                            double(time_step_cuts),
+                            double(step == 0 ? 0 : linear_iterations)};
     if (contact)
       for (const double x : contact->statistics())
         row.push_back(x);

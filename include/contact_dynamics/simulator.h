@@ -228,6 +228,7 @@ namespace ContactDynamics
     unsigned int  step                         = 0;
     unsigned int  cumulative_newton_iterations = 0;
     unsigned int  time_step_cuts               = 0;
+    unsigned int  linear_iterations            = 0; // GMRES, last step
     bool          structure_changed            = true;
     std::string   last_failure; // why the last failed step failed
     EnergyBalance energies;
