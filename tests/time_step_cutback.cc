@@ -139,7 +139,7 @@ main()
     std::vector<std::string> columns;
     const auto               rows = read_statistics(columns);
     check_true("statistics.csv keeps its header and the initial row",
-               columns.size() == 13 && columns[9] == "energy_balance_error" &&
+               columns.size() == 14 && columns[9] == "energy_balance_error" &&
                  rows.size() == 1);
   }
 }
