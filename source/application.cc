@@ -3,7 +3,7 @@
 
 #include <contact_dynamics/application.h>
 #include <contact_dynamics/parallel.h>
-#include <contact_dynamics/scene.h>
+#include <contact_dynamics/scenes/scene.h>
 #include <contact_dynamics/simulator.h>
 
 #include <exception>

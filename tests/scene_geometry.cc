@@ -8,7 +8,7 @@
 
 #include <deal.II/grid/tria.h>
 
-#include <contact_dynamics/scene.h>
+#include <contact_dynamics/scenes/scene.h>
 
 #include "tests.h"
 

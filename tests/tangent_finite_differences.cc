@@ -5,7 +5,7 @@
 //    large-deformation state, for dynamics and for quasi-statics.
 #include <deal.II/base/tensor.h>
 
-#include <contact_dynamics/material.h>
+#include <contact_dynamics/mechanics/material.h>
 #include <contact_dynamics/simulator.h>
 
 #include "tests.h"

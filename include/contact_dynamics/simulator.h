@@ -13,15 +13,15 @@
 
 #include <deal.II/lac/affine_constraints.h>
 
-#include <contact_dynamics/bodies.h>
-#include <contact_dynamics/boundary_conditions.h>
+#include <contact_dynamics/mechanics/bodies.h>
+#include <contact_dynamics/mechanics/boundary_conditions.h>
 #include <contact_dynamics/contact/contact_formulation.h>
-#include <contact_dynamics/nonlinear_solver.h>
+#include <contact_dynamics/solvers/nonlinear_solver.h>
 #include <contact_dynamics/parallel.h>
-#include <contact_dynamics/postprocessing.h>
-#include <contact_dynamics/scene.h>
-#include <contact_dynamics/solid_mechanics.h>
-#include <contact_dynamics/time_integrator.h>
+#include <contact_dynamics/output/postprocessing.h>
+#include <contact_dynamics/scenes/scene.h>
+#include <contact_dynamics/mechanics/solid_mechanics.h>
+#include <contact_dynamics/mechanics/time_integrator.h>
 
 #include <deal.II/distributed/shared_tria.h>
 #include <fstream>

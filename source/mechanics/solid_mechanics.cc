@@ -3,7 +3,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <contact_dynamics/parallel.h>
-#include <contact_dynamics/solid_mechanics.h>
+#include <contact_dynamics/mechanics/solid_mechanics.h>
 
 namespace ContactDynamics
 {

@@ -15,7 +15,7 @@
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria_description.h>
 
-#include <contact_dynamics/scene.h>
+#include <contact_dynamics/scenes/scene.h>
 
 #include <algorithm>
 #include <cmath>

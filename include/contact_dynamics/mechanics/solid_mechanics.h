@@ -1,7 +1,7 @@
 // The bulk of the bodies: inertia, Rayleigh damping, internal and body
 // forces, their Jacobian, and the energy integrals.
-#ifndef contact_dynamics_solid_mechanics_h
-#define contact_dynamics_solid_mechanics_h
+#ifndef contact_dynamics_mechanics_solid_mechanics_h
+#define contact_dynamics_mechanics_solid_mechanics_h
 
 #include <deal.II/dofs/dof_handler.h>
 
@@ -9,8 +9,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <contact_dynamics/bodies.h>
-#include <contact_dynamics/material.h>
+#include <contact_dynamics/mechanics/bodies.h>
+#include <contact_dynamics/mechanics/material.h>
 
 #include <memory>
 #include <vector>

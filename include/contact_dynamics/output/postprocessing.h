@@ -1,13 +1,13 @@
 // Everything a run writes: statistics.csv (one flushed row per step) and
 // the VTU/PVD solution files.
-#ifndef contact_dynamics_postprocessing_h
-#define contact_dynamics_postprocessing_h
+#ifndef contact_dynamics_output_postprocessing_h
+#define contact_dynamics_output_postprocessing_h
 
 #include <deal.II/base/parameter_handler.h>
 
 #include <deal.II/dofs/dof_handler.h>
 
-#include <contact_dynamics/solid_mechanics.h>
+#include <contact_dynamics/mechanics/solid_mechanics.h>
 
 #include <fstream>
 #include <string>

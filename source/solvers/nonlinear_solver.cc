@@ -1,7 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
-#include <contact_dynamics/nonlinear_solver.h>
+#include <contact_dynamics/solvers/nonlinear_solver.h>
 
 #include <cmath>
 #include <iomanip>

@@ -1,6 +1,6 @@
 // Prescribed displacements on named surfaces, as functions of time.
-#ifndef contact_dynamics_boundary_conditions_h
-#define contact_dynamics_boundary_conditions_h
+#ifndef contact_dynamics_mechanics_boundary_conditions_h
+#define contact_dynamics_mechanics_boundary_conditions_h
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
@@ -9,7 +9,7 @@
 
 #include <deal.II/fe/component_mask.h>
 
-#include <contact_dynamics/scene.h>
+#include <contact_dynamics/scenes/scene.h>
 
 #include <map>
 #include <memory>

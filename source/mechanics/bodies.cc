@@ -1,7 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
-#include <contact_dynamics/bodies.h>
+#include <contact_dynamics/mechanics/bodies.h>
 
 namespace ContactDynamics
 {

@@ -5,7 +5,7 @@
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <contact_dynamics/parallel.h>
-#include <contact_dynamics/postprocessing.h>
+#include <contact_dynamics/output/postprocessing.h>
 
 #include <cmath>
 #include <iomanip>

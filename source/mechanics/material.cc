@@ -1,7 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <contact_dynamics/material.h>
+#include <contact_dynamics/mechanics/material.h>
 
 #include <cmath>
 

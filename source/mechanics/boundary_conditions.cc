@@ -3,7 +3,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
-#include <contact_dynamics/boundary_conditions.h>
+#include <contact_dynamics/mechanics/boundary_conditions.h>
 
 #include <sstream>
 

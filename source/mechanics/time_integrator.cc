@@ -1,6 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
-#include <contact_dynamics/time_integrator.h>
+#include <contact_dynamics/mechanics/time_integrator.h>
 
 namespace ContactDynamics
 {

@@ -1,11 +1,11 @@
 // Per-body data: material, body force and initial conditions, read from a
 // `subsection Body <name>` for every body of the scene.
-#ifndef contact_dynamics_bodies_h
-#define contact_dynamics_bodies_h
+#ifndef contact_dynamics_mechanics_bodies_h
+#define contact_dynamics_mechanics_bodies_h
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <contact_dynamics/material.h>
+#include <contact_dynamics/mechanics/material.h>
 
 #include <string>
 #include <vector>

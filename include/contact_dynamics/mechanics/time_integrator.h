@@ -1,6 +1,6 @@
 // Newmark-beta time integration and the quasi-static special case.
-#ifndef contact_dynamics_time_integrator_h
-#define contact_dynamics_time_integrator_h
+#ifndef contact_dynamics_mechanics_time_integrator_h
+#define contact_dynamics_mechanics_time_integrator_h
 
 #include <deal.II/base/parameter_handler.h>
 

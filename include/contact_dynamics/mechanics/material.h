@@ -1,8 +1,8 @@
 // Constitutive models: the first Piola-Kirchhoff stress, its derivative with
 // respect to the deformation gradient and the stored energy density, all as
 // functions of the displacement gradient.
-#ifndef contact_dynamics_material_h
-#define contact_dynamics_material_h
+#ifndef contact_dynamics_mechanics_material_h
+#define contact_dynamics_mechanics_material_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>

@@ -1,7 +1,7 @@
 // The geometry of a simulation: all bodies in one triangulation, a material
 // id per body and a boundary id per named surface.
-#ifndef contact_dynamics_scene_h
-#define contact_dynamics_scene_h
+#ifndef contact_dynamics_scenes_scene_h
+#define contact_dynamics_scenes_scene_h
 
 #include <deal.II/base/parameter_handler.h>
 

@@ -1,6 +1,6 @@
 // Newton's method with a direct (Amesos) linear solver.
-#ifndef contact_dynamics_nonlinear_solver_h
-#define contact_dynamics_nonlinear_solver_h
+#ifndef contact_dynamics_solvers_nonlinear_solver_h
+#define contact_dynamics_solvers_nonlinear_solver_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
