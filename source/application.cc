@@ -3,7 +3,7 @@
 
 #include <contact_dynamics/application.h>
 #include <contact_dynamics/parallel.h>
-#include <contact_dynamics/scenes/scene.h>
+#include <contact_dynamics/scenes/scene_registry.h>
 #include <contact_dynamics/simulator.h>
 
 #include <exception>
@@ -22,7 +22,8 @@ namespace ContactDynamics
                         "2",
                         Patterns::Integer(2, 3),
                         "Space dimension: 2 (plane strain) or 3. The "
-                        "built-in scenes other than 'block' are 2-D.");
+                        "scenes in 3-D: " +
+                          scene_names(3, ", ") + ".");
     }
 
     template <int dim>

@@ -1,5 +1,7 @@
 // The geometry of a simulation: all bodies in one triangulation, a material
-// id per body and a boundary id per named surface.
+// id per body and a boundary id per named surface. Each scene is a class in
+// source/scenes/ listed in the registry (scene_registry.h); Scene<dim> is
+// the one the parameter file selects.
 #ifndef contact_dynamics_scenes_scene_h
 #define contact_dynamics_scenes_scene_h
 
@@ -8,6 +10,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -35,20 +38,38 @@ namespace ContactDynamics
   };
 
   /**
-   * Built-in parametric scenes (bouncing block, ironing, patch test, hertz,
-   * bar impact, block) and scenes read from Gmsh files whose physical groups
-   * name the bodies (cells) and surfaces (boundary faces).
-   *
-   * The bodies of a scene never share vertices, even where they touch, so
-   * that they can separate.
+   * What every scene provides. The bodies of a scene never share vertices,
+   * even where they touch, so that they can separate.
    */
+  template <int dim>
+  class SceneBase
+  {
+  public:
+    virtual ~SceneBase() = default;
+
+    /** Reads the scene's own entries; `prm` is in subsection Scene. */
+    virtual void
+    parse_parameters(ParameterHandler &prm) = 0;
+
+    /** Bodies and surfaces, known without building the mesh. */
+    virtual SceneLayout
+    layout() const = 0;
+
+    /** Builds the mesh into an empty triangulation. */
+    virtual void
+    create_triangulation(Triangulation<dim> &triangulation) const = 0;
+  };
+
+  /** The scene a parameter file selects (subsection Scene). */
   template <int dim>
   class Scene
   {
   public:
+    /** Declares the selection and the entries of every registered scene. */
     static void
     declare_parameters(ParameterHandler &prm);
 
+    /** Selects the scene (it must exist in dim) and reads its entries. */
     void
     parse_parameters(ParameterHandler &prm);
 
@@ -68,28 +89,8 @@ namespace ContactDynamics
     create_triangulation(Triangulation<dim> &triangulation) const;
 
   private:
-    std::string scene_name;
-    double      refinement_factor;
-    std::string mesh_file;
-
-    // "block" scene
-    std::vector<double>       block_origin;
-    std::vector<double>       block_size;
-    std::vector<unsigned int> block_subdivisions;
-
-    // "hertz" scene
-    double hertz_radius;
-    double hertz_block_width;
-    double hertz_block_height;
-    double hertz_gap;
-
-    // "bar impact" scene
-    double       bar_length;
-    double       bar_height;
-    double       bar_gap;
-    std::string  bar_target;
-    double       bar_target_length;
-    unsigned int bar_elements;
+    std::string                     scene_name;
+    std::shared_ptr<SceneBase<dim>> scene;
   };
 } // namespace ContactDynamics
 

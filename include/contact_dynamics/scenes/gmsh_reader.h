@@ -1,0 +1,38 @@
+// Scenes read from Gmsh files: physical groups of the cells are the bodies,
+// physical groups of the boundary faces the surfaces, all named in
+// $PhysicalNames.
+#ifndef contact_dynamics_scenes_gmsh_reader_h
+#define contact_dynamics_scenes_gmsh_reader_h
+
+#include <deal.II/grid/tria.h>
+
+#include <contact_dynamics/scenes/scene.h>
+
+#include <string>
+
+namespace ContactDynamics
+{
+  namespace GmshReader
+  {
+    /**
+     * Bodies and surfaces named in the file's $PhysicalNames (ordered by
+     * tag); throws a message naming the parameter Scene/Mesh file if the
+     * file is missing, unreadable or names no body of dimension dim.
+     */
+    SceneLayout
+    read_layout(const std::string &file, const int dim);
+
+    /**
+     * Reads the mesh into an empty triangulation: material ids from the
+     * layout's bodies, boundary ids from its surfaces; bodies meshed with
+     * common nodes get separate vertices.
+     */
+    template <int dim>
+    void
+    read_mesh(const std::string  &file,
+              const SceneLayout  &layout,
+              Triangulation<dim> &triangulation);
+  } // namespace GmshReader
+} // namespace ContactDynamics
+
+#endif

@@ -1,0 +1,272 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/tria_description.h>
+
+#include <contact_dynamics/scenes/gmsh_reader.h>
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace ContactDynamics
+{
+  namespace GmshReader
+  {
+    namespace
+    {
+      struct PhysicalNames
+      {
+        // tag -> name, sorted by tag
+        std::map<int, std::string> bodies;
+        std::map<int, std::string> surfaces;
+      };
+
+      std::string
+      mesh_file_error_prefix(const std::string &file)
+      {
+        return "The mesh file '" + file + "' (parameter Scene/Mesh file) ";
+      }
+
+      PhysicalNames
+      read_physical_names(const std::string &file, const int dim)
+      {
+        AssertThrow(
+          !file.empty(),
+          ExcMessage(
+            "The scene 'gmsh' needs a mesh file, but the parameter "
+            "Scene/Mesh file is empty. Give the path of a .msh file."));
+        std::ifstream in(file);
+        AssertThrow(in,
+                    ExcMessage("Cannot open the mesh file '" + file +
+                               "' given as the parameter Scene/Mesh file."));
+
+        PhysicalNames names;
+        std::string   line;
+        while (std::getline(in, line))
+          if (Utilities::trim(line) == "$PhysicalNames")
+            {
+              std::getline(in, line);
+              const unsigned int n =
+                Utilities::string_to_int(Utilities::trim(line));
+              for (unsigned int i = 0; i < n && std::getline(in, line); ++i)
+                {
+                  std::istringstream words(line);
+                  int                d = -1, tag = -1;
+                  words >> d >> tag;
+                  const auto first = line.find('"'), last = line.rfind('"');
+                  AssertThrow(
+                    words && first != std::string::npos && last > first,
+                    ExcMessage(mesh_file_error_prefix(file) +
+                               "has a malformed line in $PhysicalNames: '" +
+                               line + "'."));
+                  const std::string name =
+                    line.substr(first + 1, last - first - 1);
+                  if (d == dim)
+                    names.bodies[tag] = name;
+                  else if (d == dim - 1)
+                    names.surfaces[tag] = name;
+                }
+              break;
+            }
+
+        AssertThrow(
+          !names.bodies.empty(),
+          ExcMessage(
+            mesh_file_error_prefix(file) +
+            "has no physical names of dimension " + std::to_string(dim) +
+            ". Name the bodies with physical groups of the cells (Physical " +
+            (dim == 2 ? "Surface" : "Volume") + " in Gmsh)."));
+        return names;
+      }
+
+      SceneLayout
+      gmsh_layout(const PhysicalNames &names, const std::string &file)
+      {
+        SceneLayout layout;
+        for (const auto &[tag, name] : names.bodies)
+          {
+            AssertThrow(std::find(layout.body_names.begin(),
+                                  layout.body_names.end(),
+                                  name) == layout.body_names.end(),
+                        ExcMessage(mesh_file_error_prefix(file) +
+                                   "names two bodies '" + name +
+                                   "'; body names must be unique."));
+            layout.body_names.push_back(name);
+          }
+        types::boundary_id id = 0;
+        for (const auto &[tag, name] : names.surfaces)
+          {
+            AssertThrow(layout.surfaces.count(name) == 0,
+                        ExcMessage(mesh_file_error_prefix(file) +
+                                   "names two surfaces '" + name +
+                                   "'; surface names must be unique."));
+            layout.surfaces[name] = id++;
+          }
+        return layout;
+      }
+
+      // Reads the file into a scratch triangulation: material ids are the
+      // physical tags of the cells, boundary ids those of the faces (0 if
+      // none).
+      template <int dim>
+      void
+      read_tagged_mesh(const std::string &file, Triangulation<dim> &file_mesh)
+      {
+        GridIn<dim> grid_in;
+        grid_in.attach_triangulation(file_mesh);
+        std::ifstream in(file);
+        try
+          {
+            grid_in.read_msh(in);
+          }
+        catch (const ExceptionBase &e)
+          {
+            std::ostringstream reason;
+            e.print_info(reason);
+            AssertThrow(false,
+                        ExcMessage(
+                          mesh_file_error_prefix(file) +
+                          "could not be read by GridIn::read_msh():\n" +
+                          reason.str() +
+                          "(A common cause: a tagged line between two bodies "
+                          "that share nodes. Mesh touching bodies with their "
+                          "own nodes and faces.)"));
+          }
+      }
+
+      // A face by its sorted vertices (mapped through old_index if given).
+      template <typename FaceIterator>
+      std::vector<unsigned int>
+      face_key(const FaceIterator              &face,
+               const std::vector<unsigned int> &old_index)
+      {
+        std::vector<unsigned int> key;
+        for (const unsigned int v : face->vertex_indices())
+          key.push_back(old_index.empty() ? face->vertex_index(v) :
+                                            old_index[face->vertex_index(v)]);
+        std::sort(key.begin(), key.end());
+        return key;
+      }
+
+      // Copies the cells into `triangulation` with the vertices copied once
+      // per body, so that bodies meshed with common nodes still get separate
+      // vertices; returns the file's index of every new vertex.
+      template <int dim>
+      std::vector<unsigned int>
+      copy_bodies(const Triangulation<dim>                &file_mesh,
+                  const std::map<int, types::material_id> &body_of_tag,
+                  const std::string                       &file,
+                  Triangulation<dim>                      &triangulation)
+      {
+        std::vector<Point<dim>>                                       vertices;
+        std::vector<unsigned int>                                     old_index;
+        std::map<std::pair<unsigned int, unsigned int>, unsigned int> new_index;
+        std::vector<CellData<dim>>                                    cells;
+        for (const auto &cell : file_mesh.active_cell_iterators())
+          {
+            const auto body = body_of_tag.find(cell->material_id());
+            AssertThrow(
+              body != body_of_tag.end(),
+              ExcMessage(mesh_file_error_prefix(file) +
+                         "has cells with the physical tag " +
+                         std::to_string(cell->material_id()) +
+                         " that has no name in $PhysicalNames; every cell must "
+                         "belong to a named body."));
+            CellData<dim> data(cell->n_vertices());
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                const auto key =
+                  std::make_pair(body->second, cell->vertex_index(v));
+                auto it = new_index.find(key);
+                if (it == new_index.end())
+                  {
+                    it = new_index.emplace(key, vertices.size()).first;
+                    vertices.push_back(cell->vertex(v));
+                    old_index.push_back(cell->vertex_index(v));
+                  }
+                data.vertices[v] = it->second;
+              }
+            data.material_id = body->second;
+            cells.push_back(data);
+          }
+        triangulation.create_triangulation(vertices, cells, SubCellData());
+        return old_index;
+      }
+    } // namespace
+
+
+
+    SceneLayout
+    read_layout(const std::string &file, const int dim)
+    {
+      return gmsh_layout(read_physical_names(file, dim), file);
+    }
+
+
+
+    template <int dim>
+    void
+    read_mesh(const std::string  &file,
+              const SceneLayout  &layout,
+              Triangulation<dim> &triangulation)
+    {
+      AssertThrow(
+        triangulation.n_cells() == 0,
+        ExcMessage(
+          "Scene::create_triangulation() needs an empty triangulation."));
+      const PhysicalNames names = read_physical_names(file, dim);
+      Triangulation<dim>  file_mesh;
+      read_tagged_mesh(file, file_mesh);
+
+      std::map<int, types::material_id> body_of_tag;
+      for (const auto &[tag, name] : names.bodies)
+        body_of_tag[tag] = layout.body_id(name);
+
+      // Boundary faces of the file mesh, keyed by their sorted vertices.
+      std::map<std::vector<unsigned int>, types::boundary_id> face_tag;
+      for (const auto &cell : file_mesh.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            face_tag[face_key(face, {})] = face->boundary_id();
+
+      const std::vector<unsigned int> old_index =
+        copy_bodies(file_mesh, body_of_tag, file, triangulation);
+
+      std::map<int, types::boundary_id> surface_of_tag;
+      for (const auto &[tag, name] : names.surfaces)
+        surface_of_tag[tag] = layout.surface_id(name);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            {
+              const auto tag = face_tag.find(face_key(face, old_index));
+              const auto surface =
+                (tag == face_tag.end() ? surface_of_tag.end() :
+                                         surface_of_tag.find(tag->second));
+              std::ostringstream where;
+              where << face->center();
+              AssertThrow(
+                surface != surface_of_tag.end(),
+                ExcMessage(
+                  mesh_file_error_prefix(file) + "has a boundary face at (" +
+                  where.str() + ") of the body '" +
+                  layout.body_names[cell->material_id()] +
+                  "' that is in no named physical group of dimension " +
+                  std::to_string(dim - 1) +
+                  ". Every boundary face must belong to a named surface "
+                  "(bodies that touch need their own faces there)."));
+              face->set_boundary_id(surface->second);
+            }
+    }
+
+
+
+    template void
+    read_mesh(const std::string &, const SceneLayout &, Triangulation<2> &);
+    template void
+    read_mesh(const std::string &, const SceneLayout &, Triangulation<3> &);
+  } // namespace GmshReader
+} // namespace ContactDynamics
