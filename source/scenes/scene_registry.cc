@@ -9,6 +9,7 @@
   SCENE(hertz)                         \
   SCENE(bar_impact)                    \
   SCENE(block)                         \
+  SCENE(two_blocks)                    \
   SCENE(gmsh)
 
 namespace ContactDynamics
