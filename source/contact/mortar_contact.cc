@@ -13,7 +13,7 @@ namespace ContactDynamics
   using ContactAD::AD;
   using ContactAD::constant;
   using ContactAD::value;
-  using MortarGeometry::Vec;
+  using SegmentGeometry::Vec;
 
   void
   MortarParameters::declare_parameters(ParameterHandler &prm)
@@ -128,23 +128,23 @@ namespace ContactDynamics
 
     // nodal normals: average of the adjacent unit face normals
     const auto face_normal = [&](const unsigned int f) {
-      return MortarGeometry::face_normal(xs.at(s.faces[f][0]),
-                                         xs.at(s.faces[f][1]));
+      return SegmentGeometry::face_normal(xs.at(s.faces[f][0]),
+                                          xs.at(s.faces[f][1]));
     };
     const auto nodal_normal = [&](const unsigned int node) {
       Vec<AD> sum;
       for (const unsigned int f : s.node_faces[node])
         sum += face_normal(f);
-      sum /= MortarGeometry::norm(sum);
+      sum /= SegmentGeometry::norm(sum);
       return exact ? sum : constant(sum);
     };
     const Vec<AD> &x0 = xs.at(face[0]), &x1 = xs.at(face[1]);
     const Vec<AD>  n0 = nodal_normal(face[0]), n1 = nodal_normal(face[1]);
-    const Vec<AD>  face_n      = MortarGeometry::face_normal(x0, x1);
-    const AD       half_length = MortarGeometry::norm(Vec<AD>(x1 - x0)) / 2.;
+    const Vec<AD>  face_n      = SegmentGeometry::face_normal(x0, x1);
+    const AD       half_length = SegmentGeometry::norm(Vec<AD>(x1 - x0)) / 2.;
 
-    const Vec<AD> t0 = MortarGeometry::rotate(n0),
-                  t1 = MortarGeometry::rotate(n1);
+    const Vec<AD> t0 = SegmentGeometry::rotate(n0),
+                  t1 = SegmentGeometry::rotate(n1);
     std::map<types::global_dof_index, AD>     rows; // residual contributions
     std::map<types::global_dof_index, double> tangential_rows;
     AD gap[2], weight[2], gap_rate[2], slip_rate[2];
@@ -157,7 +157,7 @@ namespace ContactDynamics
       {
         const Vec<AD> &y0 = xp.at(p.faces[pf][0]), &y1 = xp.at(p.faces[pf][1]);
         // only faces that face the secondary one
-        if (value(MortarGeometry::face_normal(y0, y1)) * value(face_n) >= 0)
+        if (value(SegmentGeometry::face_normal(y0, y1)) * value(face_n) >= 0)
           continue;
         double xi_c, xi_d;
         if (!MortarGeometry::project_along_normal_field(value(x0),
@@ -199,16 +199,16 @@ namespace ContactDynamics
           {
             const AD      xi     = lo + (hi - lo) * gauss.point(q)[0];
             const AD      JxW    = gauss.weight(q) * (hi - lo) * half_length;
-            const auto    N      = MortarGeometry::shape(xi);
+            const auto    N      = SegmentGeometry::shape(xi);
             const auto    psi    = MortarGeometry::dual_shape(xi);
             const Vec<AD> x      = N[0] * x0 + N[1] * x1;
             Vec<AD>       normal = N[0] * n0 + N[1] * n1;
-            normal /= MortarGeometry::norm(normal);
+            normal /= SegmentGeometry::norm(normal);
             AD eta =
               MortarGeometry::intersect_line_with_face(x, normal, y0, y1);
             if (!exact)
               eta = constant(eta);
-            const auto    Np = MortarGeometry::shape(eta);
+            const auto    Np = SegmentGeometry::shape(eta);
             const Vec<AD> y  = Np[0] * y0 + Np[1] * y1;
             const AD      g  = (y - x) * normal;
             for (unsigned int i = 0; i < 2; ++i)
@@ -231,7 +231,8 @@ namespace ContactDynamics
                       gap_rate[i] -= psi[i] * (v_rel * normal) * JxW;
                     if (friction)
                       slip_rate[i] +=
-                        psi[i] * (v_rel * MortarGeometry::rotate(normal)) * JxW;
+                        psi[i] * (v_rel * SegmentGeometry::rotate(normal)) *
+                        JxW;
                   }
               }
             // contact traction z = sum_j psi_j (lambda_j n_j + lambda_t,j

@@ -10,7 +10,7 @@ namespace ContactDynamics
   using ContactAD::AD;
   using ContactAD::constant;
   using ContactAD::value;
-  using MortarGeometry::Vec;
+  using SegmentGeometry::Vec;
 
   void
   NodeToSegmentParameters::declare_parameters(ParameterHandler &prm)
@@ -147,7 +147,7 @@ namespace ContactDynamics
             a[k] = s.position(s.faces[f][0], state.u)[k];
             b[k] = s.position(s.faces[f][1], state.u)[k];
           }
-        n_s += MortarGeometry::face_normal(a, b);
+        n_s += SegmentGeometry::face_normal(a, b);
       }
 
     // closest point projection. A node keeps the face it projected onto in
@@ -166,7 +166,7 @@ namespace ContactDynamics
         const Vec<double> y1 = value(xp.at(p.faces[f][1]));
         const Vec<double> t  = (y1 - y0) / 2.;
         const Vec<double> m  = (y0 + y1) / 2.;
-        if (MortarGeometry::face_normal(y0, y1) * n_s >= 0)
+        if (SegmentGeometry::face_normal(y0, y1) * n_s >= 0)
           continue;
         const double eta_free = (value(x) - m) * t / (t * t);
         if (f == previous[j] && std::abs(eta_free) <= 1 + tangential_tolerance)
@@ -198,7 +198,7 @@ namespace ContactDynamics
     AD                 eta = (x - m) * t / (t * t);
     if (std::abs(eta.val() - best_eta) > 1e-12 || !exact)
       eta = AD(best_eta); // clamped at a face end, or approximate
-    Vec<AD> normal = MortarGeometry::face_normal(y0, y1);
+    Vec<AD> normal = SegmentGeometry::face_normal(y0, y1);
 
     // within the smoothing distance of a face end the normal blends
     // linearly into the mean of the two faces' normals at that node
@@ -216,25 +216,25 @@ namespace ContactDynamics
               continue;
             // the neighbour face, oriented like the surface
             const Vec<AD> n_other =
-              end == 0 ? MortarGeometry::face_normal(xp.at(other), y0) :
-                         MortarGeometry::face_normal(y1, xp.at(other));
+              end == 0 ? SegmentGeometry::face_normal(xp.at(other), y0) :
+                         SegmentGeometry::face_normal(y1, xp.at(other));
             const AD weight =
               (smoothing_distance - to_end) / smoothing_distance;
             normal += AD(weight / 2.) * (n_other - face_normal);
           }
-        normal /= MortarGeometry::norm(normal);
+        normal /= SegmentGeometry::norm(normal);
       }
     if (!exact)
       normal = constant(normal);
 
-    const auto    N   = MortarGeometry::shape(eta);
+    const auto    N   = SegmentGeometry::shape(eta);
     const Vec<AD> x_p = N[0] * y0 + N[1] * y1;
     const AD      g   = (x - x_p) * normal;
     ContactAD::add_to(pair.gap[j], g, unknowns);
     pair.weight[j].value += 1.;
     // the secondary side's normal and tangent at the node, from the primary
     const Vec<AD> n_secondary = -normal;
-    const Vec<AD> tangent     = MortarGeometry::rotate(n_secondary);
+    const Vec<AD> tangent     = SegmentGeometry::rotate(n_secondary);
     const bool    friction    = pair.friction_coefficient > 0;
     if ((this->complementarity.persistency && state.dynamic) || friction)
       {
