@@ -123,8 +123,7 @@ namespace ContactDynamics
     output_parameters.parse_parameters(prm);
     prm.leave_subsection();
 
-    contact =
-      create_contact_formulation<dim>(prm, layout, output_parameters.directory);
+    contact = create_contact_formulation<dim>(prm, layout);
     if (contact)
       fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(1),
                                            dim,
@@ -181,6 +180,8 @@ namespace ContactDynamics
       {
         contact->setup(dof_handler);
         locally_relevant.add_indices(contact->surface_dofs());
+        contact_writer = std::make_unique<ContactWriter<dim>>(
+          *contact, mpi_communicator, output_parameters.directory);
       }
 
     // Dirichlet degrees of freedom: Newton increments vanish there; so do
@@ -630,7 +631,9 @@ namespace ContactDynamics
     energies = updated;
     if (contact)
       {
-        contact->commit_step(u, t_new);
+        // u_ghost: the converged state, as the last assembly saw it
+        contact->commit_step(u_ghost, u);
+        contact_writer->write_history(*contact, t_new);
         energies.frictional = contact->dissipated_energy();
       }
     u.swap(u_new);
@@ -729,7 +732,7 @@ namespace ContactDynamics
                            step,
                            fields);
     if (contact)
-      contact->write_output(output_parameters.directory, step);
+      contact_writer->write_surfaces(*contact, step);
   }
 
   template <int dim>

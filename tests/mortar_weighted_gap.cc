@@ -190,6 +190,7 @@ main()
 {
   initlog();
   using namespace ContactDynamics::MortarGeometry;
+  using namespace ContactDynamics::SegmentGeometry;
 
   // dual basis: integral(psi_i N_j) = delta_ij integral(N_j), sum psi = 1
   const QGauss<1> gauss(3);

@@ -18,6 +18,7 @@
 #include <contact_dynamics/contact/contact_formulation.h>
 #include <contact_dynamics/solvers/nonlinear_solver.h>
 #include <contact_dynamics/parallel.h>
+#include <contact_dynamics/output/contact_writer.h>
 #include <contact_dynamics/output/postprocessing.h>
 #include <contact_dynamics/scenes/scene.h>
 #include <contact_dynamics/mechanics/solid_mechanics.h>
@@ -218,8 +219,8 @@ namespace ContactDynamics
     VectorType u, v, a, u_new, v_new, a_new;
     VectorType residual, residual_full, residual_full_old, increment,
       body_force;
-    // ghosted: the trial state of the last assembly (the contact keeps a
-    // reference to it until the step is committed), and scratch copies
+    // ghosted: the trial state of the last assembly (committed to the
+    // contact when the step converges), and scratch copies
     VectorType    u_ghost, v_ghost, a_ghost, scratch_ghost[2];
     std::ofstream null_stream; // never opened: discards what it gets
 
@@ -235,6 +236,7 @@ namespace ContactDynamics
 
     std::unique_ptr<StatisticsFile>      statistics;
     std::unique_ptr<SolutionWriter<dim>> solution_writer;
+    std::unique_ptr<ContactWriter<dim>>  contact_writer;
     Timer                                wall_timer;
   };
 } // namespace ContactDynamics

@@ -165,9 +165,7 @@ namespace ContactDynamics
 
   template <int dim>
   std::unique_ptr<ContactFormulation<dim>>
-  create_contact_formulation(ParameterHandler  &prm,
-                             const SceneLayout &layout,
-                             const std::string &output_directory)
+  create_contact_formulation(ParameterHandler &prm, const SceneLayout &layout)
   {
     prm.enter_subsection("Contact");
     ContactParameters contact;
@@ -182,23 +180,15 @@ namespace ContactDynamics
     prm.leave_subsection();
     prm.leave_subsection();
 
-    std::unique_ptr<SurfaceContact<dim>> formulation;
     if (contact.formulation == "mortar")
-      formulation = std::make_unique<MortarContact<dim>>(contact, mortar);
-    else if (contact.formulation == "nts")
-      formulation = std::make_unique<NodeToSegmentContact<dim>>(contact, nts);
-    else
-      return nullptr;
-    formulation->set_output_directory(output_directory);
-    return formulation;
+      return std::make_unique<MortarContact<dim>>(contact, mortar);
+    if (contact.formulation == "nts")
+      return std::make_unique<NodeToSegmentContact<dim>>(contact, nts);
+    return nullptr;
   }
 
   template std::unique_ptr<ContactFormulation<2>>
-  create_contact_formulation<2>(ParameterHandler &,
-                                const SceneLayout &,
-                                const std::string &);
+  create_contact_formulation<2>(ParameterHandler &, const SceneLayout &);
   template std::unique_ptr<ContactFormulation<3>>
-  create_contact_formulation<3>(ParameterHandler &,
-                                const SceneLayout &,
-                                const std::string &);
+  create_contact_formulation<3>(ParameterHandler &, const SceneLayout &);
 } // namespace ContactDynamics

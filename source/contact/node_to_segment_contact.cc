@@ -10,7 +10,7 @@ namespace ContactDynamics
   using ContactAD::AD;
   using ContactAD::constant;
   using ContactAD::value;
-  using MortarGeometry::Vec;
+  using SegmentGeometry::Vec;
 
   void
   NodeToSegmentParameters::declare_parameters(ParameterHandler &prm)
@@ -110,17 +110,123 @@ namespace ContactDynamics
     return unknowns;
   }
 
+  namespace
+  {
+    // the primary face closest to secondary node j at x and the parameter
+    // of the projection on it; `previous`: per node, the face of the last
+    // projection
+    template <int dim, typename PairData>
+    unsigned int
+    closest_face(const PairData                        &pair,
+                 const unsigned int                     j,
+                 const Vec<double>                     &x,
+                 const std::map<unsigned int, Vec<AD>> &xp,
+                 const VectorType                      &u,
+                 std::vector<unsigned int>             &previous,
+                 double                                &best_eta)
+    {
+      const auto &s = pair.secondary;
+      const auto &p = pair.primary;
+      // the secondary node's own normal, to skip faces seen from behind
+      Vec<double> n_s;
+      for (const unsigned int f : s.node_faces[j])
+        {
+          Vec<double> a, b;
+          for (unsigned int k = 0; k < 2; ++k)
+            {
+              a[k] = s.position(s.faces[f][0], u)[k];
+              b[k] = s.position(s.faces[f][1], u)[k];
+            }
+          n_s += SegmentGeometry::face_normal(a, b);
+        }
+
+      // A node keeps the face it projected onto in the previous evaluation
+      // while it stays within a small tolerance of that face: at a concave
+      // kink of the primary surface two faces are equally close, and
+      // switching between them at every Newton iteration (their normals
+      // differ) would stall the iteration.
+      constexpr double tangential_tolerance = 1e-2;
+      unsigned int     best                 = ContactSurface<dim>::invalid;
+      double           best_distance        = 1e300;
+      best_eta                              = 0;
+      for (const unsigned int f : pair.candidates[j])
+        {
+          const Vec<double> y0 = value(xp.at(p.faces[f][0]));
+          const Vec<double> y1 = value(xp.at(p.faces[f][1]));
+          const Vec<double> t  = (y1 - y0) / 2.;
+          const Vec<double> m  = (y0 + y1) / 2.;
+          if (SegmentGeometry::face_normal(y0, y1) * n_s >= 0)
+            continue;
+          const double eta_free = (x - m) * t / (t * t);
+          if (f == previous[j] &&
+              std::abs(eta_free) <= 1 + tangential_tolerance)
+            {
+              best     = f;
+              best_eta = eta_free;
+              break;
+            }
+          const double eta      = std::max(-1., std::min(1., eta_free));
+          const double distance = (x - (m + eta * t)).norm();
+          if (distance < best_distance)
+            {
+              best          = f;
+              best_distance = distance;
+              // within the tolerance the projection extends the face, as it
+              // does for a kept face
+              best_eta =
+                std::abs(eta_free) <= 1 + tangential_tolerance ? eta_free : eta;
+            }
+        }
+      previous[j] = best;
+      return best;
+    }
+
+    // the primary normal at eta on the face, blended within
+    // `smoothing_distance` of its ends into the neighbours' normals
+    template <int dim, typename PairData>
+    Vec<AD>
+    smoothed_normal(const PairData                        &pair,
+                    const unsigned int                     face,
+                    const AD                              &eta,
+                    const std::map<unsigned int, Vec<AD>> &xp,
+                    const double                           smoothing_distance)
+    {
+      const auto    &p  = pair.primary;
+      const Vec<AD> &y0 = xp.at(p.faces[face][0]),
+                    &y1 = xp.at(p.faces[face][1]);
+      Vec<AD> normal    = SegmentGeometry::face_normal(y0, y1);
+      if (smoothing_distance <= 0)
+        return normal;
+      // within the smoothing distance of a face end the normal blends
+      // linearly into the mean of the two faces' normals at that node
+      const Vec<AD> face_normal = normal;
+      for (const unsigned int end : {0u, 1u})
+        {
+          const AD to_end =
+            end == 0 ? AD((1. + eta) / 2.) : AD((1. - eta) / 2.);
+          const unsigned int node  = p.faces[face][end];
+          const unsigned int other = p.neighbour(node, face);
+          if (to_end.val() >= smoothing_distance ||
+              other == ContactSurface<dim>::invalid)
+            continue;
+          // the neighbour face, oriented like the surface
+          const Vec<AD> n_other =
+            end == 0 ? SegmentGeometry::face_normal(xp.at(other), y0) :
+                       SegmentGeometry::face_normal(y1, xp.at(other));
+          const AD weight = (smoothing_distance - to_end) / smoothing_distance;
+          normal += AD(weight / 2.) * (n_other - face_normal);
+        }
+      normal /= SegmentGeometry::norm(normal);
+      return normal;
+    }
+  } // namespace
+
   template <int dim>
   void
-  NodeToSegmentContact<dim>::assemble_patch(
-    PairData                        &pair,
-    const unsigned int               j,
-    const TrialState                &state,
-    const AffineConstraints<double> &constraints,
-    const bool                       with_jacobian,
-    VectorType                      &residual,
-    MatrixType                      &jacobian,
-    VectorType                      &residual_full)
+  NodeToSegmentContact<dim>::assemble_patch(PairData          &pair,
+                                            const unsigned int j,
+                                            const TrialState  &state,
+                                            PatchForces       &forces)
   {
     const auto &s        = pair.secondary;
     const auto &p        = pair.primary;
@@ -137,57 +243,12 @@ namespace ContactDynamics
     const AD lambda   = variables.multiplier();
     const AD lambda_t = variables.multiplier();
 
-    // the secondary node's own normal, to skip faces seen from behind
-    Vec<double> n_s;
-    for (const unsigned int f : s.node_faces[j])
-      {
-        Vec<double> a, b;
-        for (unsigned int k = 0; k < 2; ++k)
-          {
-            a[k] = s.position(s.faces[f][0], state.u)[k];
-            b[k] = s.position(s.faces[f][1], state.u)[k];
-          }
-        n_s += MortarGeometry::face_normal(a, b);
-      }
-
-    // closest point projection. A node keeps the face it projected onto in
-    // the previous evaluation while it stays within a small tolerance of
-    // that face: at a concave kink of the primary surface two faces are
-    // equally close, and switching between them at every Newton iteration
-    // (their normals differ) would stall the iteration.
-    constexpr double tangential_tolerance = 1e-2;
-    auto            &previous = last_face[&pair - this->pairs.data()];
+    // closest point projection
+    auto &previous = last_face[&pair - this->pairs.data()];
     previous.resize(s.n_nodes(), ContactSurface<dim>::invalid);
-    unsigned int best          = ContactSurface<dim>::invalid;
-    double       best_distance = 1e300, best_eta = 0;
-    for (const unsigned int f : faces)
-      {
-        const Vec<double> y0 = value(xp.at(p.faces[f][0]));
-        const Vec<double> y1 = value(xp.at(p.faces[f][1]));
-        const Vec<double> t  = (y1 - y0) / 2.;
-        const Vec<double> m  = (y0 + y1) / 2.;
-        if (MortarGeometry::face_normal(y0, y1) * n_s >= 0)
-          continue;
-        const double eta_free = (value(x) - m) * t / (t * t);
-        if (f == previous[j] && std::abs(eta_free) <= 1 + tangential_tolerance)
-          {
-            best     = f;
-            best_eta = eta_free;
-            break;
-          }
-        const double eta      = std::max(-1., std::min(1., eta_free));
-        const double distance = (value(x) - (m + eta * t)).norm();
-        if (distance < best_distance)
-          {
-            best          = f;
-            best_distance = distance;
-            // within the tolerance the projection extends the face, as it
-            // does for a kept face
-            best_eta =
-              std::abs(eta_free) <= 1 + tangential_tolerance ? eta_free : eta;
-          }
-      }
-    previous[j] = best;
+    double             best_eta = 0;
+    const unsigned int best =
+      closest_face<dim>(pair, j, value(x), xp, state.u, previous, best_eta);
     if (best == ContactSurface<dim>::invalid)
       return; // no projection: the node is inactive
 
@@ -198,43 +259,19 @@ namespace ContactDynamics
     AD                 eta = (x - m) * t / (t * t);
     if (std::abs(eta.val() - best_eta) > 1e-12 || !exact)
       eta = AD(best_eta); // clamped at a face end, or approximate
-    Vec<AD> normal = MortarGeometry::face_normal(y0, y1);
-
-    // within the smoothing distance of a face end the normal blends
-    // linearly into the mean of the two faces' normals at that node
-    if (smoothing_distance > 0)
-      {
-        const Vec<AD> face_normal = normal;
-        for (const unsigned int end : {0u, 1u})
-          {
-            const AD to_end =
-              end == 0 ? AD((1. + eta) / 2.) : AD((1. - eta) / 2.);
-            const unsigned int node  = p.faces[best][end];
-            const unsigned int other = p.neighbour(node, best);
-            if (to_end.val() >= smoothing_distance ||
-                other == ContactSurface<dim>::invalid)
-              continue;
-            // the neighbour face, oriented like the surface
-            const Vec<AD> n_other =
-              end == 0 ? MortarGeometry::face_normal(xp.at(other), y0) :
-                         MortarGeometry::face_normal(y1, xp.at(other));
-            const AD weight =
-              (smoothing_distance - to_end) / smoothing_distance;
-            normal += AD(weight / 2.) * (n_other - face_normal);
-          }
-        normal /= MortarGeometry::norm(normal);
-      }
+    Vec<AD> normal =
+      smoothed_normal<dim>(pair, best, eta, xp, smoothing_distance);
     if (!exact)
       normal = constant(normal);
 
-    const auto    N   = MortarGeometry::shape(eta);
+    const auto    N   = SegmentGeometry::shape(eta);
     const Vec<AD> x_p = N[0] * y0 + N[1] * y1;
     const AD      g   = (x - x_p) * normal;
     ContactAD::add_to(pair.gap[j], g, unknowns);
     pair.weight[j].value += 1.;
     // the secondary side's normal and tangent at the node, from the primary
     const Vec<AD> n_secondary = -normal;
-    const Vec<AD> tangent     = MortarGeometry::rotate(n_secondary);
+    const Vec<AD> tangent     = SegmentGeometry::rotate(n_secondary);
     const bool    friction    = pair.friction_coefficient > 0;
     if ((this->complementarity.persistency && state.dynamic) || friction)
       {
@@ -259,21 +296,14 @@ namespace ContactDynamics
                                                  p.dofs[c][k],
                                                  p.dofs[d][k]};
         for (unsigned int r = 0; r < 3; ++r)
-          this->add_force(dofs[r],
-                          rows[r].val(),
-                          ContactAD::derivatives(rows[r], unknowns),
-                          constraints,
-                          with_jacobian,
-                          residual,
-                          jacobian,
-                          residual_full);
+          forces.add(dofs[r],
+                     rows[r].val(),
+                     ContactAD::derivatives(rows[r], unknowns));
         if (friction)
           {
-            this->add_tangential_force(s.dofs[j][k], f_t[k].val());
-            this->add_tangential_force(p.dofs[c][k],
-                                       -N[0].val() * f_t[k].val());
-            this->add_tangential_force(p.dofs[d][k],
-                                       -N[1].val() * f_t[k].val());
+            forces.add_tangential(s.dofs[j][k], f_t[k].val());
+            forces.add_tangential(p.dofs[c][k], -N[0].val() * f_t[k].val());
+            forces.add_tangential(p.dofs[d][k], -N[1].val() * f_t[k].val());
           }
       }
   }

@@ -8,7 +8,6 @@
 #include <contact_dynamics/parallel.h>
 
 #include <algorithm>
-#include <iomanip>
 #include <set>
 #include <sstream>
 
@@ -110,8 +109,7 @@ namespace ContactDynamics
     pairs.clear();
     pairs.resize(contact.pairs.size());
     std::set<types::global_dof_index> secondary_normal;
-    friction               = false;
-    frictional_dissipation = 0;
+    friction = false;
     for (unsigned int p = 0; p < contact.pairs.size(); ++p)
       {
         auto &pair = pairs[p];
@@ -162,41 +160,20 @@ namespace ContactDynamics
       if (secondary_normal.count(i) == 0)
         other_multiplier_dofs.push_back(i);
 
-    // monitored points: the nearest secondary node of any pair
-    monitored.clear();
-    for (const auto &point : contact.monitored_points)
+    // the contact forces act on the displacements of both surfaces
+    std::set<types::global_dof_index> surface_displacements;
+    for (auto &pair : pairs)
       {
-        double                                best = 1e300;
-        std::pair<unsigned int, unsigned int> where{0, 0};
-        for (unsigned int p = 0; p < pairs.size(); ++p)
-          for (unsigned int j = 0; j < pairs[p].secondary.n_nodes(); ++j)
-            {
-              double d = 0;
-              for (unsigned int k = 0; k < 2; ++k)
-                d += std::pow(pairs[p].secondary.reference[j][k] - point[k], 2);
-              if (d < best)
-                {
-                  best  = d;
-                  where = {p, j};
-                }
-            }
-        monitored.push_back(where);
+        for (const auto *surface : {&pair.secondary, &pair.primary})
+          for (const auto &node_dofs : surface->dofs)
+            for (unsigned int d = 0; d < dim; ++d)
+              surface_displacements.insert(node_dofs[d]);
+        pair.position = pair.secondary.reference;
       }
-    if (!directory.empty() && is_root(comm))
-      {
-        history =
-          std::make_unique<std::ofstream>(directory + "/contact_history.csv");
-        *history << "time";
-        for (const auto &m : monitored)
-          {
-            const Point<dim> &X = pairs[m.first].secondary.reference[m.second];
-            *history << ",pressure(" << X[0] << " " << X[1] << ")"
-                     << ",gap(" << X[0] << " " << X[1] << ")";
-          }
-        *history << std::endl;
-      }
-    have_state   = false;
-    contact_work = 0;
+    work.reinit(owned_dofs,
+                comm,
+                {surface_displacements.begin(), surface_displacements.end()},
+                friction);
   }
 
   template <int dim>
@@ -315,41 +292,94 @@ namespace ContactDynamics
 
   template <int dim>
   void
-  SurfaceContact<dim>::add_force(
-    const types::global_dof_index                                  row,
-    const double                                                   value,
-    const std::vector<std::pair<types::global_dof_index, double>> &derivatives,
-    const AffineConstraints<double>                               &constraints,
-    const bool  with_jacobian,
-    VectorType &residual,
-    MatrixType &jacobian,
-    VectorType &residual_full)
+  SurfaceContact<dim>::add_forces(const PatchForces  &forces,
+                                  const LinearSystem &system)
   {
-    if (skip_forces)
-      return;
-    residual_full(row) += value;
-    force(row) += value;
-    if (constraints.is_constrained(row))
-      return;
-    residual(row) += value;
-    if (with_jacobian)
-      for (const auto &d : derivatives)
-        if (!constraints.is_constrained(d.first))
-          jacobian.add(row, d.first, d.second);
+    for (const auto &r : forces.rows)
+      {
+        system.residual_full(r.row) += r.value;
+        work.add_force(r.row, r.value);
+        if (system.constraints.is_constrained(r.row))
+          continue;
+        system.residual(r.row) += r.value;
+        if (system.with_jacobian)
+          for (const auto &d : r.derivatives)
+            if (!system.constraints.is_constrained(d.first))
+              system.jacobian.add(r.row, d.first, d.second);
+      }
+    for (const auto &t : forces.tangential)
+      work.add_friction_force(t.first, t.second);
+  }
+
+  template <int dim>
+  bool
+  SurfaceContact<dim>::assemble_normal(PairData           &pair,
+                                       const unsigned int  j,
+                                       const TrialState   &state,
+                                       const LinearSystem &system,
+                                       LinearizedValue    &constraint)
+  {
+    // the complementarity condition, scaled by the node's reference weight
+    // so that its row has force units
+    NodeState                    &node   = pair.nodes[j];
+    const types::global_dof_index row    = pair.secondary.dofs[j][dim];
+    const double                  scale  = pair.secondary.reference_weight[j];
+    const double                  lambda = state.u(row);
+    node.pressure = lambda * traction_per_multiplier(pair, j, state.u);
+    node.gap      = pair.gap[j].value;
+    node.weight   = pair.weight[j].value;
+    // a mortar node needs more than half its support covered: on a sliver
+    // the dual function can be negative and turn a clear gap into a
+    // weighted penetration
+    node.projected = node.weight > minimum_coverage() * scale;
+
+    // the constraint quantity c * g / w and its derivatives
+    bool active = false;
+    if (node.projected)
+      {
+        const bool             rate = node.persistent && state.dynamic;
+        const LinearizedValue &g    = rate ? pair.gap_rate[j] : pair.gap[j];
+        const double factor    = complementarity.c_n * (rate ? state.dt : 1.);
+        const bool   normalize = complementarity.normalize_c_n;
+        const double w         = normalize ? node.weight : 1.;
+        constraint.value       = factor * g.value / w;
+        for (const auto &d : g.derivatives)
+          constraint.derivatives[d.first] += factor * d.second / w;
+        if (normalize)
+          for (const auto &d : pair.weight[j].derivatives)
+            constraint.derivatives[d.first] -=
+              factor * g.value * d.second / (w * w);
+        active = (lambda - constraint.value > 0);
+      }
+    node.active = active;
+    n_active += active;
+    if (system.constraints.is_constrained(row))
+      return active;
+    if (active)
+      {
+        system.residual(row) += scale * constraint.value;
+        if (system.with_jacobian)
+          for (const auto &d : constraint.derivatives)
+            if (!system.constraints.is_constrained(d.first))
+              system.jacobian.add(row, d.first, scale * d.second);
+      }
+    else
+      {
+        system.residual(row) += scale * lambda;
+        if (system.with_jacobian)
+          system.jacobian.add(row, row, scale);
+      }
+    return active;
   }
 
   template <int dim>
   void
-  SurfaceContact<dim>::assemble_friction(
-    PairData                        &pair,
-    const unsigned int               j,
-    const bool                       active,
-    const double                     lambda_n,
-    const LinearizedValue           &constraint,
-    const AffineConstraints<double> &constraints,
-    const bool                       with_jacobian,
-    VectorType                      &residual,
-    MatrixType                      &jacobian)
+  SurfaceContact<dim>::assemble_friction(PairData              &pair,
+                                         const unsigned int     j,
+                                         const bool             active,
+                                         const LinearizedValue &constraint,
+                                         const VectorType      &u,
+                                         const LinearSystem    &system)
   {
     // Coulomb friction (paper equation 8) in its semi-smooth form: with
     // xi = lambda_n - c_n g (the normal argument) and s = lambda_t + c_t v,
@@ -360,7 +390,8 @@ namespace ContactDynamics
     const types::global_dof_index row      = pair.secondary.dofs[j][dim + 1];
     const double                  scale    = pair.secondary.reference_weight[j];
     const double                  mu       = pair.friction_coefficient;
-    const double                  lambda_t = (*last_u)(row);
+    const double                  lambda_n = u(pair.secondary.dofs[j][dim]);
+    const double                  lambda_t = u(row);
 
     // normalized slip rate
     LinearizedValue v;
@@ -372,46 +403,46 @@ namespace ContactDynamics
     if (complementarity.normalize_c_n && node.projected)
       for (const auto &d : pair.weight[j].derivatives)
         v.derivatives[d.first] -= pair.slip_rate[j].value * d.second / (w * w);
-    node.tangential = lambda_t * traction_per_multiplier(pair, j, *last_u);
+    node.tangential = lambda_t * traction_per_multiplier(pair, j, u);
     node.slip_rate  = v.value;
     node.stick      = false;
-    if (constraints.is_constrained(row))
+    if (system.constraints.is_constrained(row))
       return;
 
     const double xi = lambda_n - constraint.value;
     const double s  = lambda_t + complementarity.c_t * v.value;
     if (!active)
       {
-        residual(row) += scale * lambda_t;
-        if (with_jacobian)
-          jacobian.add(row, row, scale);
+        system.residual(row) += scale * lambda_t;
+        if (system.with_jacobian)
+          system.jacobian.add(row, row, scale);
         return;
       }
     if (std::abs(s) < mu * xi)
       {
         node.stick = true;
         ++n_stick;
-        residual(row) += scale * complementarity.c_t * v.value;
-        if (with_jacobian)
+        system.residual(row) += scale * complementarity.c_t * v.value;
+        if (system.with_jacobian)
           for (const auto &d : v.derivatives)
-            if (!constraints.is_constrained(d.first))
-              jacobian.add(row,
-                           d.first,
-                           scale * complementarity.c_t * d.second);
+            if (!system.constraints.is_constrained(d.first))
+              system.jacobian.add(row,
+                                  d.first,
+                                  scale * complementarity.c_t * d.second);
         return;
       }
     ++n_slip;
     const double sign = s > 0 ? 1. : -1.;
-    residual(row) += scale * (lambda_t - mu * xi * sign);
-    if (with_jacobian)
+    system.residual(row) += scale * (lambda_t - mu * xi * sign);
+    if (system.with_jacobian)
       {
-        jacobian.add(row, row, scale);
+        system.jacobian.add(row, row, scale);
         const types::global_dof_index normal_row = pair.secondary.dofs[j][dim];
-        if (!constraints.is_constrained(normal_row))
-          jacobian.add(row, normal_row, -scale * mu * sign);
+        if (!system.constraints.is_constrained(normal_row))
+          system.jacobian.add(row, normal_row, -scale * mu * sign);
         for (const auto &d : constraint.derivatives)
-          if (!constraints.is_constrained(d.first))
-            jacobian.add(row, d.first, scale * mu * sign * d.second);
+          if (!system.constraints.is_constrained(d.first))
+            system.jacobian.add(row, d.first, scale * mu * sign * d.second);
       }
   }
 
@@ -424,137 +455,72 @@ namespace ContactDynamics
                                 MatrixType                      &jacobian,
                                 VectorType                      &residual_full)
   {
-    if (force.size() != state.u.size())
-      {
-        for (VectorType *v : {&force,
-                              &force_committed,
-                              &friction_force,
-                              &friction_force_committed})
-          v->reinit(owned_dofs, comm);
-      }
-    force          = 0;
-    friction_force = 0;
+    work.start_assembly();
     n_stick = n_slip = 0;
-    last_u           = &state.u;
     n_active         = 0;
     total_force[0] = total_force[1] = 0;
-
-    const auto local = [&]() {
-      for (auto &pair : pairs)
-        {
-          const unsigned int n_nodes = pair.secondary.n_nodes();
-          pair.gap.assign(n_nodes, LinearizedValue());
-          pair.weight.assign(n_nodes, LinearizedValue());
-          pair.gap_rate.assign(n_nodes, LinearizedValue());
-          pair.slip_rate.assign(n_nodes, LinearizedValue());
-          // a patch at the edge of this process's part of the surface is
-          // assembled by both neighbours for the gaps of their nodes, its
-          // forces by one of them
-          for (unsigned int p = 0; p < n_patches(pair); ++p)
-            if (pair.handled_patch[p])
-              {
-                skip_forces = !pair.force_patch[p];
-                assemble_patch(pair,
-                               p,
-                               state,
-                               constraints,
-                               with_jacobian,
-                               residual,
-                               jacobian,
-                               residual_full);
-              }
-          skip_forces = false;
-
-          // the complementarity condition of every secondary node, scaled by
-          // its reference weight so that its row has force units
-          for (unsigned int j = 0; j < n_nodes; ++j)
-            if (pair.owned_node[j])
-              {
-                NodeState                    &node = pair.nodes[j];
-                const types::global_dof_index row = pair.secondary.dofs[j][dim];
-                const double scale  = pair.secondary.reference_weight[j];
-                const double lambda = state.u(row);
-                node.pressure =
-                  lambda * traction_per_multiplier(pair, j, state.u);
-                node.gap    = pair.gap[j].value;
-                node.weight = pair.weight[j].value;
-                // a mortar node needs more than half its support covered: on a
-                // sliver the dual function can be negative and turn a clear gap
-                // into a weighted penetration
-                node.projected = node.weight > minimum_coverage() * scale;
-
-                // the constraint quantity c * g / w and its derivatives
-                LinearizedValue constraint;
-                bool            active = false;
-                if (node.projected)
-                  {
-                    const bool rate = node.persistent && state.dynamic;
-                    const LinearizedValue &g =
-                      rate ? pair.gap_rate[j] : pair.gap[j];
-                    const double factor =
-                      complementarity.c_n * (rate ? state.dt : 1.);
-                    const bool   normalize = complementarity.normalize_c_n;
-                    const double w         = normalize ? node.weight : 1.;
-                    constraint.value       = factor * g.value / w;
-                    for (const auto &d : g.derivatives)
-                      constraint.derivatives[d.first] += factor * d.second / w;
-                    if (normalize)
-                      for (const auto &d : pair.weight[j].derivatives)
-                        constraint.derivatives[d.first] -=
-                          factor * g.value * d.second / (w * w);
-                    active = (lambda - constraint.value > 0);
-                  }
-                node.active = active;
-                n_active += active;
-                if (constraints.is_constrained(row))
-                  continue;
-                if (active)
-                  {
-                    residual(row) += scale * constraint.value;
-                    if (with_jacobian)
-                      for (const auto &d : constraint.derivatives)
-                        if (!constraints.is_constrained(d.first))
-                          jacobian.add(row, d.first, scale * d.second);
-                  }
-                else
-                  {
-                    residual(row) += scale * lambda;
-                    if (with_jacobian)
-                      jacobian.add(row, row, scale);
-                  }
-
-                if (pair.friction_coefficient > 0)
-                  assemble_friction(pair,
-                                    j,
-                                    active,
-                                    lambda,
-                                    constraint,
-                                    constraints,
-                                    with_jacobian,
-                                    residual,
-                                    jacobian);
-              }
-        }
-    };
-    run_collectively(comm, local, [&]() {
-      finish_assembly(residual, jacobian, residual_full, with_jacobian);
-    });
+    const LinearSystem system{constraints,
+                              with_jacobian,
+                              residual,
+                              jacobian,
+                              residual_full};
+    run_collectively(
+      comm,
+      [&]() {
+        for (auto &pair : pairs)
+          assemble_pair(pair, state, system);
+      },
+      [&]() {
+        finish_assembly(system);
+      });
   }
 
   template <int dim>
   void
-  SurfaceContact<dim>::finish_assembly(VectorType &residual,
-                                       MatrixType &jacobian,
-                                       VectorType &residual_full,
-                                       const bool  with_jacobian)
+  SurfaceContact<dim>::assemble_pair(PairData           &pair,
+                                     const TrialState   &state,
+                                     const LinearSystem &system)
   {
-    skip_forces = false;
-    residual.compress(VectorOperation::add);
-    residual_full.compress(VectorOperation::add);
-    if (with_jacobian)
-      jacobian.compress(VectorOperation::add);
-    force.compress(VectorOperation::add);
-    friction_force.compress(VectorOperation::add);
+    const unsigned int n_nodes = pair.secondary.n_nodes();
+    pair.gap.assign(n_nodes, LinearizedValue());
+    pair.weight.assign(n_nodes, LinearizedValue());
+    pair.gap_rate.assign(n_nodes, LinearizedValue());
+    pair.slip_rate.assign(n_nodes, LinearizedValue());
+    // a patch at the edge of this process's part of the surface is
+    // assembled by both neighbours for the gaps of their nodes, its forces
+    // by one of them
+    for (unsigned int p = 0; p < n_patches(pair); ++p)
+      if (pair.handled_patch[p])
+        {
+          PatchForces forces;
+          assemble_patch(pair, p, state, forces);
+          if (pair.force_patch[p])
+            add_forces(forces, system);
+        }
+
+    for (unsigned int j = 0; j < n_nodes; ++j)
+      if (pair.owned_node[j])
+        {
+          LinearizedValue constraint;
+          const bool      active =
+            assemble_normal(pair, j, state, system, constraint);
+          // a constrained normal row has no friction row either
+          if (pair.friction_coefficient > 0 &&
+              !system.constraints.is_constrained(pair.secondary.dofs[j][dim]))
+            assemble_friction(pair, j, active, constraint, state.u, system);
+        }
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::finish_assembly(const LinearSystem &system)
+  {
+    system.residual.compress(VectorOperation::add);
+    system.residual_full.compress(VectorOperation::add);
+    if (system.with_jacobian)
+      system.jacobian.compress(VectorOperation::add);
+    work.compress();
+    const VectorType &force = work.trial_force();
 
     for (const auto &pair : pairs)
       for (const auto &node_dofs : pair.secondary.dofs)
@@ -624,39 +590,10 @@ namespace ContactDynamics
 
   template <int dim>
   void
-  SurfaceContact<dim>::commit_step(const VectorType &old_u, const double time)
+  SurfaceContact<dim>::commit_step(const VectorType &u, const VectorType &old_u)
   {
-    Assert(last_u != nullptr, ExcInternalError());
-    // work of the contact forces on the bodies, trapezoidal in time
-    std::set<types::global_dof_index> dofs;
-    for (const auto &pair : pairs)
-      for (const auto *surface : {&pair.secondary, &pair.primary})
-        for (const auto &node_dofs : surface->dofs)
-          for (unsigned int d = 0; d < dim; ++d)
-            dofs.insert(node_dofs[d]);
-    double work = 0, friction_work = 0;
-    for (const auto i : dofs)
-      if (owned_dofs.is_element(i))
-        {
-          const double du = (*last_u)(i)-old_u(i);
-          work -=
-            du * 0.5 * (force(i) + (have_state ? force_committed(i) : 0.));
-          if (friction)
-            friction_work -= du * 0.5 *
-                             (friction_force(i) +
-                              (have_state ? friction_force_committed(i) : 0.));
-        }
-    contact_work += Utilities::MPI::sum(work, comm);
-    if (friction)
-      {
-        frictional_dissipation -= Utilities::MPI::sum(friction_work, comm);
-        friction_force_committed = friction_force;
-      }
-    force_committed = force;
-    committed_u     = *last_u;
-    have_state      = true;
-    gap_field       = 0;
-
+    work.commit(u, old_u);
+    gap_field = 0;
     for (auto &pair : pairs)
       for (unsigned int j = 0; j < pair.nodes.size(); ++j)
         {
@@ -666,19 +603,9 @@ namespace ContactDynamics
             node.normalized_gap() <= complementarity.capture_tolerance;
           if (pair.owned_node[j])
             gap_field(pair.secondary.dofs[j][dim]) = node.normalized_gap();
+          pair.position[j] = pair.secondary.position(j, u);
         }
     gap_field.compress(VectorOperation::insert);
-
-    if (history)
-      {
-        *history << std::setprecision(10) << time;
-        for (const auto &m : monitored)
-          {
-            const NodeState &node = pairs[m.first].nodes[m.second];
-            *history << ',' << node.pressure << ',' << node.normalized_gap();
-          }
-        *history << std::endl;
-      }
   }
 
   template <int dim>
@@ -703,46 +630,12 @@ namespace ContactDynamics
     std::vector<double> values{double(n_active),
                                total_force[0],
                                total_force[1],
-                               contact_work};
+                               work.work()};
     if (friction)
       for (const double v :
-           {double(n_stick), double(n_slip), frictional_dissipation})
+           {double(n_stick), double(n_slip), work.dissipation()})
         values.push_back(v);
     return values;
-  }
-
-  template <int dim>
-  void
-  SurfaceContact<dim>::write_output(const std::string &dir,
-                                    const unsigned int step)
-  {
-    if (!is_root(comm))
-      return;
-    std::ofstream out(dir + "/contact_surface-" +
-                      Utilities::int_to_string(step, 5) + ".csv");
-    out << "pair,node,x,y,gap,pressure,active,tangential_traction,stick\n";
-    for (unsigned int p = 0; p < pairs.size(); ++p)
-      {
-        const auto               &s = pairs[p].secondary;
-        std::vector<unsigned int> order(s.n_nodes());
-        for (unsigned int j = 0; j < order.size(); ++j)
-          order[j] = j;
-        std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
-          return s.reference[a][0] < s.reference[b][0] ||
-                 (s.reference[a][0] == s.reference[b][0] &&
-                  s.reference[a][1] < s.reference[b][1]);
-        });
-        for (const unsigned int j : order)
-          {
-            const NodeState &node = pairs[p].nodes[j];
-            const Point<dim> x =
-              have_state ? s.position(j, committed_u) : s.reference[j];
-            out << p << ',' << j << ',' << std::setprecision(10) << x[0] << ','
-                << x[1] << ',' << node.normalized_gap() << ',' << node.pressure
-                << ',' << node.active << ',' << node.tangential << ','
-                << node.stick << '\n';
-          }
-      }
   }
 
   template <int dim>

@@ -7,7 +7,7 @@
 #include <deal.II/differentiation/ad/sacado_number_types.h>
 #include <deal.II/differentiation/ad/sacado_product_types.h>
 
-#include <contact_dynamics/contact/mortar_geometry.h>
+#include <contact_dynamics/contact/segment_geometry.h>
 #include <contact_dynamics/contact/surface_contact.h>
 
 #include <utility>
@@ -18,7 +18,7 @@ namespace ContactDynamics
   namespace ContactAD
   {
     using AD = Sacado::Fad::DFad<double>;
-    using MortarGeometry::Vec;
+    using SegmentGeometry::Vec;
 
     /** The value only: drops derivatives (approximate Jacobians). */
     inline AD

@@ -57,6 +57,37 @@ namespace ContactDynamics
     bool              dynamic; // false for quasi-static
   };
 
+  /** The state of a secondary node after an assembly. */
+  struct ContactNodeState
+  {
+    double gap        = 0; // weighted (mortar) or pointwise gap
+    double weight     = 0; // its normalization; 0: no projection
+    double pressure   = 0; // lambda_n
+    double tangential = 0; // lambda_t (friction)
+    double slip_rate  = 0; // normalized relative tangential velocity
+    bool   projected  = false;
+    bool   active     = false;
+    bool   stick      = false; // active and sticking (friction)
+    bool   persistent = false; // velocity-level condition next step
+
+    /** The gap in length units. */
+    double
+    normalized_gap() const
+    {
+      return projected ? gap / weight : 0.;
+    }
+  };
+
+  /** The secondary nodes of a contact pair, for the output. */
+  template <int dim>
+  struct SecondaryNodes
+  {
+    const std::vector<Point<dim>> &reference;
+    // at the last committed step (the reference ones before the first)
+    const std::vector<Point<dim>>       &position;
+    const std::vector<ContactNodeState> &states;
+  };
+
   template <int dim>
   class ContactFormulation
   {
@@ -114,11 +145,11 @@ namespace ContactDynamics
     multiplier_dofs() const = 0;
 
     /**
-     * The step to `time` converged at the state of the last assemble():
-     * keep the history the next step needs; `old_u` is the state before.
+     * The step converged at the state `u` of the last assemble(): keep the
+     * history the next step needs; `old_u` is the state before.
      */
     virtual void
-    commit_step(const VectorType &old_u, const double time) = 0;
+    commit_step(const VectorType &u, const VectorType &old_u) = 0;
 
     virtual std::vector<std::string>
     statistics_columns() const = 0;
@@ -160,16 +191,25 @@ namespace ContactDynamics
       return 0;
     }
 
-    /** Surface CSV files etc. at an output time. */
-    virtual void
-    write_output(const std::string &directory, const unsigned int step) = 0;
+    /** Contact pairs, in the order of `Contact/Pairs`. */
+    virtual unsigned int
+    n_pairs() const = 0;
+
+    /**
+     * The secondary nodes of a pair and their states, known on every
+     * process after an assembly.
+     */
+    virtual SecondaryNodes<dim>
+    secondary_nodes(const unsigned int pair) const = 0;
+
+    /** Reference points whose nearest secondary nodes the output follows. */
+    virtual const std::vector<Point<2>> &
+    monitored_points() const = 0;
   };
 
   template <int dim>
   std::unique_ptr<ContactFormulation<dim>>
-  create_contact_formulation(ParameterHandler  &prm,
-                             const SceneLayout &layout,
-                             const std::string &output_directory);
+  create_contact_formulation(ParameterHandler &prm, const SceneLayout &layout);
 
   /** Declares the `Contact` subsection with every formulation's entries. */
   void

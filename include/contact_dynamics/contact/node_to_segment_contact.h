@@ -67,15 +67,13 @@ namespace ContactDynamics
       const unsigned int               patch,
       const std::vector<unsigned int> &primary_faces) const override;
 
+    using PatchForces = typename SurfaceContact<dim>::PatchForces;
+
     void
-    assemble_patch(PairData                        &pair,
-                   const unsigned int               patch,
-                   const TrialState                &state,
-                   const AffineConstraints<double> &constraints,
-                   const bool                       with_jacobian,
-                   VectorType                      &residual,
-                   MatrixType                      &jacobian,
-                   VectorType                      &residual_full) override;
+    assemble_patch(PairData          &pair,
+                   const unsigned int patch,
+                   const TrialState  &state,
+                   PatchForces       &forces) override;
 
   private:
     double smoothing_distance;

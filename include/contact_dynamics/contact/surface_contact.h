@@ -1,9 +1,10 @@
 // What the contact formulations with nodal Lagrange multipliers on the
 // secondary surface share: surfaces, search, multiplier unknowns, the
 // nonlinear complementarity function solved by semi-smooth Newton (with
-// optional persistency), the contact work and the outputs. A formulation
-// only says how one "patch" (a secondary face for mortar, a secondary node
-// for node-to-segment) contributes forces and nodal gaps.
+// optional persistency), friction and the node states the output shows. A
+// formulation only says how one contact "patch" (a secondary face for
+// mortar, a secondary node for node-to-segment) contributes forces and
+// nodal gaps.
 #ifndef contact_dynamics_contact_surface_contact_h
 #define contact_dynamics_contact_surface_contact_h
 
@@ -11,10 +12,11 @@
 
 #include <contact_dynamics/contact/contact_formulation.h>
 #include <contact_dynamics/contact/contact_surface.h>
+#include <contact_dynamics/contact/contact_work.h>
 
-#include <fstream>
 #include <map>
-#include <memory>
+#include <utility>
+#include <vector>
 
 namespace ContactDynamics
 {
@@ -47,14 +49,10 @@ namespace ContactDynamics
   class SurfaceContact : public ContactFormulation<dim>
   {
   public:
+    using NodeState = ContactNodeState;
+
     SurfaceContact(const ContactParameters         &contact,
                    const ComplementarityParameters &complementarity);
-
-    void
-    set_output_directory(const std::string &dir)
-    {
-      directory = dir;
-    }
 
     unsigned int
     n_extra_components() const override
@@ -108,7 +106,7 @@ namespace ContactDynamics
     }
 
     void
-    commit_step(const VectorType &old_u, const double time) override;
+    commit_step(const VectorType &u, const VectorType &old_u) override;
 
     std::vector<std::string>
     statistics_columns() const override;
@@ -116,14 +114,10 @@ namespace ContactDynamics
     std::vector<double>
     statistics() const override;
 
-    void
-    write_output(const std::string &directory,
-                 const unsigned int step) override;
-
     double
     dissipated_energy() const override
     {
-      return frictional_dissipation;
+      return work.dissipation();
     }
 
     void
@@ -135,27 +129,6 @@ namespace ContactDynamics
       return {{&gap_field, "normal_gap"}};
     }
 
-    /** Per secondary node of a pair, for tests and output. */
-    struct NodeState
-    {
-      double gap        = 0; // weighted (mortar) or pointwise gap
-      double weight     = 0; // its normalization; 0: no projection
-      double pressure   = 0; // lambda_n
-      double tangential = 0; // lambda_t (friction)
-      double slip_rate  = 0; // normalized relative tangential velocity
-      bool   projected  = false;
-      bool   active     = false;
-      bool   stick      = false; // active and sticking (friction)
-      bool   persistent = false; // velocity-level condition next step
-
-      /** The gap in length units. */
-      double
-      normalized_gap() const
-      {
-        return projected ? gap / weight : 0.;
-      }
-    };
-
     const std::vector<NodeState> &
     node_states(const unsigned int pair) const
     {
@@ -166,6 +139,26 @@ namespace ContactDynamics
     secondary_surface(const unsigned int pair) const
     {
       return pairs[pair].secondary;
+    }
+
+    unsigned int
+    n_pairs() const override
+    {
+      return pairs.size();
+    }
+
+    SecondaryNodes<dim>
+    secondary_nodes(const unsigned int pair) const override
+    {
+      return {pairs[pair].secondary.reference,
+              pairs[pair].position,
+              pairs[pair].nodes};
+    }
+
+    const std::vector<Point<2>> &
+    monitored_points() const override
+    {
+      return contact.monitored_points;
     }
 
   protected:
@@ -183,6 +176,44 @@ namespace ContactDynamics
       // patches it assembles (those touching its nodes, for their gaps) and
       // of these the ones whose forces it adds (first node owned)
       std::vector<bool> owned_node, handled_patch, force_patch;
+      // secondary nodes at the last committed step
+      std::vector<Point<dim>> position;
+    };
+
+    /**
+     * The forces of one patch in the order a formulation computes them;
+     * SurfaceContact adds them to the system (or, for a patch assembled
+     * for its gaps only, drops them).
+     */
+    struct PatchForces
+    {
+      using Derivatives =
+        std::vector<std::pair<types::global_dof_index, double>>;
+
+      /** A residual row of a contact force with its derivatives. */
+      void
+      add(const types::global_dof_index row,
+          const double                  value,
+          Derivatives                 &&derivatives)
+      {
+        rows.push_back({row, value, std::move(derivatives)});
+      }
+
+      /** Records the tangential (friction) part of a force row. */
+      void
+      add_tangential(const types::global_dof_index row, const double value)
+      {
+        tangential.emplace_back(row, value);
+      }
+
+      struct Row
+      {
+        types::global_dof_index row;
+        double                  value;
+        Derivatives             derivatives;
+      };
+      std::vector<Row>                                        rows;
+      std::vector<std::pair<types::global_dof_index, double>> tangential;
     };
 
     /**
@@ -230,54 +261,60 @@ namespace ContactDynamics
                    const std::vector<unsigned int> &primary_faces) const = 0;
 
     /**
-     * Adds a patch's forces (with add_force()) and its contributions to
-     * pair.gap, pair.weight, pair.gap_rate of its nodes.
+     * Adds a patch's forces to `forces` and its contributions to pair.gap,
+     * pair.weight, pair.gap_rate and pair.slip_rate of its nodes.
      */
     virtual void
-    assemble_patch(PairData                        &pair,
-                   const unsigned int               patch,
-                   const TrialState                &state,
-                   const AffineConstraints<double> &constraints,
-                   const bool                       with_jacobian,
-                   VectorType                      &residual,
-                   MatrixType                      &jacobian,
-                   VectorType                      &residual_full) = 0;
-
-    /** Records the tangential (friction) part of a force row. */
-    void
-    add_tangential_force(const types::global_dof_index row, const double value)
-    {
-      if (!skip_forces)
-        friction_force(row) += value;
-    }
-
-    /** A residual row of a contact force with its derivatives. */
-    void
-    add_force(const types::global_dof_index row,
-              const double                  value,
-              const std::vector<std::pair<types::global_dof_index, double>>
-                                              &derivatives,
-              const AffineConstraints<double> &constraints,
-              const bool                       with_jacobian,
-              VectorType                      &residual,
-              MatrixType                      &jacobian,
-              VectorType                      &residual_full);
+    assemble_patch(PairData          &pair,
+                   const unsigned int patch,
+                   const TrialState  &state,
+                   PatchForces       &forces) = 0;
 
     ContactParameters         contact;
     ComplementarityParameters complementarity;
     std::vector<PairData>     pairs;
 
   private:
+    /** The linear system an assembly adds to; constrained rows are skipped. */
+    struct LinearSystem
+    {
+      const AffineConstraints<double> &constraints;
+      const bool                       with_jacobian;
+      VectorType                      &residual;
+      MatrixType                      &jacobian;
+      VectorType                      &residual_full; // all force rows
+    };
+
+    /** The patches and the complementarity rows of the owned nodes. */
     void
-    assemble_friction(PairData                        &pair,
-                      const unsigned int               node,
-                      const bool                       active,
-                      const double                     lambda_n,
-                      const LinearizedValue           &constraint,
-                      const AffineConstraints<double> &constraints,
-                      const bool                       with_jacobian,
-                      VectorType                      &residual,
-                      MatrixType                      &jacobian);
+    assemble_pair(PairData           &pair,
+                  const TrialState   &state,
+                  const LinearSystem &system);
+
+    /** Adds a patch's forces to the system and the contact work. */
+    void
+    add_forces(const PatchForces &forces, const LinearSystem &system);
+
+    /**
+     * The normal complementarity condition of node j: its state, the
+     * constraint quantity c g / w and, unless its row is constrained, its
+     * row. Returns whether the node is active.
+     */
+    bool
+    assemble_normal(PairData           &pair,
+                    const unsigned int  node,
+                    const TrialState   &state,
+                    const LinearSystem &system,
+                    LinearizedValue    &constraint);
+
+    /** The friction condition of node j, given its normal condition. */
+    void
+    assemble_friction(PairData              &pair,
+                      const unsigned int     node,
+                      const bool             active,
+                      const LinearizedValue &constraint,
+                      const VectorType      &u,
+                      const LinearSystem    &system);
 
     std::vector<std::vector<unsigned int>>
     compute_candidates(const PairData   &pair,
@@ -290,35 +327,20 @@ namespace ContactDynamics
 
     /** After the patches and rows: compress and reduce the statistics. */
     void
-    finish_assembly(VectorType &residual,
-                    MatrixType &jacobian,
-                    VectorType &residual_full,
-                    const bool  with_jacobian);
+    finish_assembly(const LinearSystem &system);
 
-    MPI_Comm comm        = MPI_COMM_WORLD;
-    bool     skip_forces = false; // a patch assembled for its gaps only
+    MPI_Comm comm = MPI_COMM_WORLD;
     IndexSet owned_dofs;
 
     std::vector<types::global_dof_index> normal_multiplier_dofs;
     std::vector<types::global_dof_index> other_multiplier_dofs;
 
-    // contact forces (and their friction part) at the last assembly and at
-    // the last committed step
-    VectorType        force, force_committed, committed_u;
-    VectorType        friction_force, friction_force_committed;
-    double            frictional_dissipation = 0;
-    bool              friction               = false;
-    unsigned int      n_stick = 0, n_slip = 0;
-    VectorType        gap_field; // normalized gap at the multiplier dofs
-    double            contact_work   = 0;
-    unsigned int      n_active       = 0;
-    double            total_force[2] = {0, 0};
-    bool              have_state     = false;
-    const VectorType *last_u         = nullptr;
-
-    std::vector<std::pair<unsigned int, unsigned int>> monitored; // pair, node
-    std::unique_ptr<std::ofstream>                     history;
-    std::string                                        directory;
+    ContactWork  work;
+    bool         friction = false;
+    unsigned int n_stick = 0, n_slip = 0;
+    VectorType   gap_field; // normalized gap at the multiplier dofs
+    unsigned int n_active       = 0;
+    double       total_force[2] = {0, 0};
   };
 } // namespace ContactDynamics
 

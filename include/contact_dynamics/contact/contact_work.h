@@ -1,0 +1,94 @@
+// The work of the contact forces on the bodies and its frictional part,
+// trapezoidal in time: the forces of the trial state (the last assembly)
+// and of the last committed step.
+#ifndef contact_dynamics_contact_contact_work_h
+#define contact_dynamics_contact_contact_work_h
+
+#include <deal.II/base/index_set.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <vector>
+
+namespace ContactDynamics
+{
+  using namespace dealii;
+
+  class ContactWork
+  {
+  public:
+    /**
+     * No forces and no work yet. `dofs`: the displacement degrees of
+     * freedom of the contact surfaces (in any order of processes, sorted).
+     */
+    void
+    reinit(const IndexSet                             &owned_dofs,
+           const MPI_Comm                              comm,
+           const std::vector<types::global_dof_index> &dofs,
+           const bool                                  friction);
+
+    /** Before an assembly: the trial forces start from zero. */
+    void
+    start_assembly();
+
+    /** A contact force on a degree of freedom, in the trial state. */
+    void
+    add_force(const types::global_dof_index row, const double value)
+    {
+      force(row) += value;
+    }
+
+    /** The friction part of a force added with add_force(). */
+    void
+    add_friction_force(const types::global_dof_index row, const double value)
+    {
+      friction_force(row) += value;
+    }
+
+    /** After an assembly: the forces of all processes are added up. */
+    void
+    compress();
+
+    /** The contact forces of the last assembly. */
+    const TrilinosWrappers::MPI::Vector &
+    trial_force() const
+    {
+      return force;
+    }
+
+    /**
+     * The step from `old_u` to `u` converged with the forces of the last
+     * assembly: adds their work and they become the committed forces.
+     */
+    void
+    commit(const TrilinosWrappers::MPI::Vector &u,
+           const TrilinosWrappers::MPI::Vector &old_u);
+
+    /** Work of the contact forces on the bodies so far. */
+    double
+    work() const
+    {
+      return contact_work;
+    }
+
+    /** Energy dissipated by friction so far. */
+    double
+    dissipation() const
+    {
+      return frictional_dissipation;
+    }
+
+  private:
+    MPI_Comm                             comm = MPI_COMM_WORLD;
+    IndexSet                             owned_dofs;
+    std::vector<types::global_dof_index> dofs;
+    bool                                 friction = false;
+    // zero before the first step: the trapezoidal rule starts from no force
+    TrilinosWrappers::MPI::Vector force, force_committed;
+    TrilinosWrappers::MPI::Vector friction_force, friction_force_committed;
+    double                        contact_work           = 0;
+    double                        frictional_dissipation = 0;
+  };
+} // namespace ContactDynamics
+
+#endif

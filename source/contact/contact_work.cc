@@ -1,0 +1,60 @@
+#include <deal.II/base/mpi.h>
+
+#include <contact_dynamics/contact/contact_work.h>
+
+namespace ContactDynamics
+{
+  void
+  ContactWork::reinit(const IndexSet                             &owned_dofs,
+                      const MPI_Comm                              comm,
+                      const std::vector<types::global_dof_index> &dofs,
+                      const bool                                  friction)
+  {
+    this->comm       = comm;
+    this->owned_dofs = owned_dofs;
+    this->dofs       = dofs;
+    this->friction   = friction;
+    for (auto *v :
+         {&force, &force_committed, &friction_force, &friction_force_committed})
+      v->reinit(owned_dofs, comm);
+    contact_work           = 0;
+    frictional_dissipation = 0;
+  }
+
+  void
+  ContactWork::start_assembly()
+  {
+    force          = 0;
+    friction_force = 0;
+  }
+
+  void
+  ContactWork::compress()
+  {
+    force.compress(VectorOperation::add);
+    friction_force.compress(VectorOperation::add);
+  }
+
+  void
+  ContactWork::commit(const TrilinosWrappers::MPI::Vector &u,
+                      const TrilinosWrappers::MPI::Vector &old_u)
+  {
+    double work = 0, friction_work = 0;
+    for (const auto i : dofs)
+      if (owned_dofs.is_element(i))
+        {
+          const double du = u(i) - old_u(i);
+          work -= du * 0.5 * (force(i) + force_committed(i));
+          if (friction)
+            friction_work -=
+              du * 0.5 * (friction_force(i) + friction_force_committed(i));
+        }
+    contact_work += Utilities::MPI::sum(work, comm);
+    if (friction)
+      {
+        frictional_dissipation -= Utilities::MPI::sum(friction_work, comm);
+        friction_force_committed = friction_force;
+      }
+    force_committed = force;
+  }
+} // namespace ContactDynamics

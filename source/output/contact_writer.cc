@@ -1,0 +1,107 @@
+#include <deal.II/base/utilities.h>
+
+#include <contact_dynamics/contact/contact_formulation.h>
+#include <contact_dynamics/output/contact_writer.h>
+#include <contact_dynamics/parallel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+
+namespace ContactDynamics
+{
+  template <int dim>
+  ContactWriter<dim>::ContactWriter(const ContactFormulation<dim> &contact,
+                                    const MPI_Comm                 comm,
+                                    const std::string             &directory)
+    : comm(comm)
+    , directory(directory)
+  {
+    // monitored points: the nearest secondary node of any pair
+    for (const auto &point : contact.monitored_points())
+      {
+        double                                best = 1e300;
+        std::pair<unsigned int, unsigned int> where{0, 0};
+        for (unsigned int p = 0; p < contact.n_pairs(); ++p)
+          {
+            const auto &reference = contact.secondary_nodes(p).reference;
+            for (unsigned int j = 0; j < reference.size(); ++j)
+              {
+                double d = 0;
+                for (unsigned int k = 0; k < 2; ++k)
+                  d += std::pow(reference[j][k] - point[k], 2);
+                if (d < best)
+                  {
+                    best  = d;
+                    where = {p, j};
+                  }
+              }
+          }
+        monitored.push_back(where);
+      }
+    if (directory.empty() || !is_root(comm))
+      return;
+    history =
+      std::make_unique<std::ofstream>(directory + "/contact_history.csv");
+    *history << "time";
+    for (const auto &m : monitored)
+      {
+        const auto &X = contact.secondary_nodes(m.first).reference[m.second];
+        *history << ",pressure(" << X[0] << " " << X[1] << ")"
+                 << ",gap(" << X[0] << " " << X[1] << ")";
+      }
+    *history << std::endl;
+  }
+
+  template <int dim>
+  void
+  ContactWriter<dim>::write_history(const ContactFormulation<dim> &contact,
+                                    const double                   time)
+  {
+    if (!history)
+      return;
+    *history << std::setprecision(10) << time;
+    for (const auto &m : monitored)
+      {
+        const auto &node = contact.secondary_nodes(m.first).states[m.second];
+        *history << ',' << node.pressure << ',' << node.normalized_gap();
+      }
+    *history << std::endl;
+  }
+
+  template <int dim>
+  void
+  ContactWriter<dim>::write_surfaces(const ContactFormulation<dim> &contact,
+                                     const unsigned int             step) const
+  {
+    if (!is_root(comm))
+      return;
+    std::ofstream out(directory + "/contact_surface-" +
+                      Utilities::int_to_string(step, 5) + ".csv");
+    out << "pair,node,x,y,gap,pressure,active,tangential_traction,stick\n";
+    for (unsigned int p = 0; p < contact.n_pairs(); ++p)
+      {
+        const SecondaryNodes<dim> nodes = contact.secondary_nodes(p);
+        const auto               &X     = nodes.reference;
+        // along the surface for straight ones: by reference x, then y
+        std::vector<unsigned int> order(X.size());
+        for (unsigned int j = 0; j < order.size(); ++j)
+          order[j] = j;
+        std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
+          return X[a][0] < X[b][0] || (X[a][0] == X[b][0] && X[a][1] < X[b][1]);
+        });
+        for (const unsigned int j : order)
+          {
+            const ContactNodeState &node = nodes.states[j];
+            const auto             &x    = nodes.position[j];
+            out << p << ',' << j << ',' << std::setprecision(10) << x[0] << ','
+                << x[1] << ',' << node.normalized_gap() << ',' << node.pressure
+                << ',' << node.active << ',' << node.tangential << ','
+                << node.stick << '\n';
+          }
+      }
+  }
+
+  template class ContactWriter<2>;
+  template class ContactWriter<3>;
+} // namespace ContactDynamics
