@@ -81,6 +81,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from plot_env import np, plt  # noqa: E402  (numpy, matplotlib with Agg; re-exec if missing)
+import bench_common  # noqa: E402  (parameter files with changed entries, CSV files by name)
 
 REPO = Path(__file__).resolve().parent.parent
 NEVER = 1000000  # a VTU interval that writes only the first and the last step
@@ -92,148 +93,6 @@ PROBE = {"bouncing_block": (-1.5, 0.0), "ironing": (1.2, 4.02)}
 # first contact has built up (contact starts at t = 0.04, the tool moves
 # down by t/2 and sideways by t)
 IRONING_FROM = 0.2
-
-# ---------------------------------------------------------------------------
-# Parameter files
-# ---------------------------------------------------------------------------
-
-_SUBSECTION = re.compile(r"^\s*subsection\s+(.*?)\s*$")
-_END = re.compile(r"^\s*end\s*$")
-_SET = re.compile(r"^(\s*)set\s+(.*?)\s*=(.*)$")
-
-
-def _norm(name):
-    return " ".join(name.split())
-
-
-def _join_continuations(lines):
-    """deal.II joins a line ending in a backslash with the next one."""
-    out, pending = [], None
-    for line in lines:
-        if pending is not None:
-            line = pending + " " + line.lstrip()
-            pending = None
-        if line.rstrip().endswith("\\"):
-            pending = line.rstrip()[:-1].rstrip()
-            continue
-        out.append(line)
-    if pending is not None:
-        out.append(pending)
-    return out
-
-
-def _set_entry(lines, sections, entry, value):
-    """Set one entry (inside the subsections `sections`) in a list of lines.
-
-    Every existing 'set entry = ...' line in that exact subsection nesting is
-    replaced (deal.II keeps the last one, all are made equal); comments on
-    other lines are kept. If the entry is missing it is added before the
-    'end' of the deepest existing enclosing subsection (creating the missing
-    subsections), or at the end of the file."""
-    stack, found = [], False
-    # closing line index of the first block whose path is sections[:k]
-    block_end, opened = {}, []
-    target = [_norm(s) for s in sections]
-    for i, raw in enumerate(lines):
-        code = raw.split("#", 1)[0]
-        m = _SUBSECTION.match(code)
-        if m:
-            stack.append(_norm(m.group(1)))
-            opened.append(i)
-            continue
-        if _END.match(code):
-            if not stack:
-                raise ValueError(f"parameter file: 'end' without subsection at line {i + 1}")
-            k = len(stack)
-            if stack == target[:k] and k not in block_end:
-                block_end[k] = i
-            stack.pop()
-            opened.pop()
-            continue
-        m = _SET.match(code)
-        if m and stack == target and _norm(m.group(2)) == _norm(entry):
-            lines[i] = f"{m.group(1)}set {entry} = {value}"
-            found = True
-    if stack:
-        raise ValueError("parameter file: subsection '%s' is not closed" % "/".join(stack))
-    if found:
-        return lines
-    k = max([0] + [d for d in block_end if d <= len(target)])
-    insert_at = block_end[k] if k > 0 else len(lines)
-    new = []
-    for d in range(k, len(target)):
-        new.append("  " * d + f"subsection {sections[d]}")
-    new.append("  " * len(target) + f"set {entry} = {value}")
-    for d in range(len(target) - 1, k - 1, -1):
-        new.append("  " * d + "end")
-    return lines[:insert_at] + new + lines[insert_at:]
-
-
-def edit_prm(text, changes):
-    """The parameter file `text` with entries changed or added.
-
-    changes maps 'Subsection/Subsection/Entry' (top-level: 'Entry') to the
-    new value, e.g. {'Contact/Mortar/Stabilization': 'none'}."""
-    lines = _join_continuations(text.splitlines())
-    for path, value in changes.items():
-        *sections, entry = [p.strip() for p in path.split("/")]
-        lines = _set_entry(lines, sections, entry, str(value))
-    return "\n".join(lines) + "\n"
-
-
-def read_prm_text(text):
-    """Entries of a parameter file as {'Section/Entry': value} (the last one wins)."""
-    values, section = {}, []
-    for line in _join_continuations(text.splitlines()):
-        line = line.split("#", 1)[0].strip()
-        m = _SUBSECTION.match(line)
-        if m:
-            section.append(_norm(m.group(1)))
-        elif _END.match(line) and section:
-            section.pop()
-        else:
-            m = _SET.match(line)
-            if m:
-                values["/".join(section + [_norm(m.group(2))])] = m.group(3).strip()
-    return values
-
-
-def _self_test_edit_prm():
-    """Checks of edit_prm on a small file (run with --self-test)."""
-    text = """# comment with subsection and end and set X = 1
-set Dimension = 2
-subsection Contact   # trailing comment
-  set Formulation = mortar   # comment
-  subsection Mortar
-    set c_n = 10
-  end
-end
-subsection Scene
-  set Scene = bar impact
-  subsection Bar impact
-    set Elements along bar = \\
-        40
-  end
-end
-"""
-    out = edit_prm(text, {"Contact/Formulation": "nts",
-                          "Contact/Node to segment/Stabilization": "persistency",
-                          "Contact/Mortar/c_n": "20",
-                          "Scene/Bar impact/Elements along bar": "80",
-                          "Scene/Refinement factor": "2",
-                          "Output/VTU interval": "0",
-                          "Dimension": "2"})
-    v = read_prm_text(out)
-    expect = {"Contact/Formulation": "nts", "Contact/Node to segment/Stabilization": "persistency",
-              "Contact/Mortar/c_n": "20", "Scene/Bar impact/Elements along bar": "80",
-              "Scene/Refinement factor": "2", "Output/VTU interval": "0", "Dimension": "2",
-              "Scene/Scene": "bar impact"}
-    for key, value in expect.items():
-        assert v.get(key) == value, (key, v.get(key), out)
-    assert out.count("subsection Node to segment") == 1 and out.count("subsection Output") == 1
-    assert out.startswith("# comment with subsection and end and set X = 1\n")
-    print("edit_prm self-test: OK")
-
 
 # ---------------------------------------------------------------------------
 # Runs
@@ -249,13 +108,18 @@ class Run:
         self.keep_surface, self.reference = keep_surface, reference
         self.result = {}
 
-    def prm_text(self, results_dir):
+    def prm_changes(self, results_dir):
+        """The entries this run changes in its base file."""
         self.dir = results_dir / "accuracy" / self.id
         changes = dict(self.changes)
         changes["Output/Output directory"] = str(self.dir)
         if not self.keep_surface:
             changes["Output/VTU interval"] = 0
-        return edit_prm((REPO / self.base).read_text(), changes)
+        return changes
+
+    def prm_text(self, results_dir):
+        """run.prm: includes the base file, then sets the changed entries."""
+        return bench_common.prm_with_changes(REPO / self.base, self.prm_changes(results_dir))
 
 
 def variant_label(meta):
@@ -474,7 +338,8 @@ def clean_output(directory, keep_surface):
 def execute(run, args, exe, counter):
     """Run a simulation (repeatedly if it is cheap), record timing in run.json."""
     text = run.prm_text(args.results)
-    digest = hashlib.sha1((text + str(exe.stat().st_mtime)).encode()).hexdigest()
+    digest = hashlib.sha1((text + (REPO / run.base).read_text()
+                           + str(exe.stat().st_mtime)).encode()).hexdigest()
     info_path = run.dir / "run.json"
     if args.reuse and info_path.is_file():
         info = json.loads(info_path.read_text())
@@ -520,20 +385,7 @@ def execute(run, args, exe, counter):
 
 def read_csv(path):
     """{column: array} of a numeric CSV file (skips malformed lines)."""
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    if not rows:
-        return {}
-    names = [n.split("(")[0].strip() for n in rows[0]]
-    data = []
-    for row in rows[1:]:
-        if len(row) == len(names):
-            try:
-                data.append([float(x) for x in row])
-            except ValueError:
-                pass
-    data = np.array(data, dtype=float).reshape(-1, len(names))
-    return {n: data[:, i] for i, n in enumerate(names)}
+    return bench_common.read_csv(path, units=False)
 
 
 def surface_files(directory):
@@ -571,29 +423,18 @@ def read_history(path, point):
     contact_history.csv (columns 'pressure(x y)', 'gap(x y)'), or None."""
     if not path.is_file():
         return None
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    if len(rows) < 2:
-        return None
-    names = rows[0]
+    columns = bench_common.read_csv(path)
     probes = []
-    for i, n in enumerate(names):
-        m = re.match(r"pressure\(([-+0-9.eE]+) ([-+0-9.eE]+)\)", n.strip())
+    for n in columns:
+        m = re.match(r"pressure(\(([-+0-9.eE]+) ([-+0-9.eE]+)\))", n)
         if m:
-            probes.append((math.hypot(float(m.group(1)) - point[0],
-                                      float(m.group(2)) - point[1]), i))
-    if not probes:
+            probes.append((math.hypot(float(m.group(2)) - point[0],
+                                      float(m.group(3)) - point[1]), m.group(1)))
+    if not probes or not len(columns["time"]):
         return None
-    i = min(probes)[1]
-    data = []
-    for row in rows[1:]:
-        if len(row) == len(names):
-            try:
-                data.append([float(row[0]), float(row[i]), float(row[i + 1])])
-            except ValueError:
-                pass
-    data = np.array(data, dtype=float).reshape(-1, 3)
-    return dict(time=data[:, 0], pressure=data[:, 1], gap=data[:, 2])
+    where = min(probes)[1]
+    return dict(time=columns["time"], pressure=columns["pressure" + where],
+                gap=columns["gap" + where])
 
 
 def energy_balance_error(stats):
@@ -792,8 +633,8 @@ def collect(runs):
     for run in runs:
         st, tm = stats_of[run.id], run.timing
         r = dict(run_id=run.id, problem=run.problem, **run.meta)
-        r["end_time"] = run.meta.get("end_time", float(read_prm_text(run.prm_text(ARGS.results))
-                                                       .get("Time integration/End time", "nan")))
+        r["end_time"] = run.meta.get("end_time", float(bench_common.prm_values(
+            REPO / run.base, run.prm_changes(ARGS.results)).get("Time integration/End time", "nan")))
         walls = tm["walls"]
         ok_walls = walls if tm["returncode"] == 0 else walls[:1]
         r.update(wall_median_s=float(np.median(ok_walls)), wall_min_s=float(np.min(ok_walls)),
@@ -1338,7 +1179,8 @@ def parse_args():
                          "<results>/accuracy_vs_cost.csv; e.g. accuracy_vs_cost_quick.csv)")
     ap.add_argument("--dry-run", action="store_true",
                     help="write the parameter files and check them with --validate, run nothing")
-    ap.add_argument("--self-test", action="store_true", help="test the parameter-file editor")
+    ap.add_argument("--self-test", action="store_true",
+                    help="test the parameter-file override (benchmarks/bench_common.py)")
     ap.add_argument("--timeout", type=float, default=3600,
                     help="kill a run after this many seconds (default 3600)")
     ap.add_argument("--exe", type=Path, default=REPO / "build" / "contact-dynamics",
@@ -1360,7 +1202,7 @@ def main():
     global ARGS
     args = ARGS = parse_args()
     if args.self_test:
-        _self_test_edit_prm()
+        bench_common.self_test()
         return
     csv_path = args.results / "accuracy_vs_cost.csv"
     if args.plots_only:
@@ -1383,8 +1225,12 @@ def main():
                 (run.dir / "run.prm").write_text(text)
                 p = subprocess.run([str(args.exe), "--validate", "run.prm"], cwd=run.dir,
                                    capture_output=True, text=True)
-                values = read_prm_text(text)
-                wrong = [k for k, v in run.changes.items() if values.get(k) != str(v)]
+                # the values the simulator reads
+                used = subprocess.run([str(args.exe), "--print-parameters", "run.prm"],
+                                      cwd=run.dir, capture_output=True, text=True)
+                values = bench_common.parse_prm(used.stdout)
+                wrong = [k for k, v in run.prm_changes(args.results).items()
+                         if values.get(k) != str(v)]
                 status = "OK" if p.returncode == 0 and not wrong else \
                     f"FAILED {wrong} {p.stdout[-300:]}{p.stderr[-300:]}"
                 bad += status != "OK"

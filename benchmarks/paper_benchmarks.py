@@ -23,6 +23,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from plot_env import np, plt  # noqa: E402  (numpy, matplotlib with Agg; re-exec if missing)
 from matplotlib.patches import Patch  # noqa: E402
+import bench_common  # noqa: E402  (CSV files by column name, parameter files)
 
 REPO = Path(__file__).resolve().parent.parent
 # benchmark -> [(variant key, legend label)]; the first one is the reference.
@@ -44,38 +45,9 @@ FRICTIONLESS = ["mortar", "nts", "nts_smoothed"]
 FRICTION = ["mortar_friction", "nts_smoothed_friction"]
 
 
-def read_csv(path):
-    """Column names and numeric rows of a CSV file (skips malformed lines)."""
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    if not rows:
-        return [], np.empty((0, 0))
-    names = [n.strip() for n in rows[0]]
-    data = []
-    for row in rows[1:]:
-        try:
-            if len(row) == len(names):
-                data.append([float(x) for x in row])
-        except ValueError:
-            pass  # e.g. a line half written by a running simulation
-    return names, np.array(data, dtype=float).reshape(-1, len(names))
-
-
 def read_prm(path):
-    """Entries of a deal.II parameter file as {'Section/Entry': value}."""
-    values, section = {}, []
-    if not path.is_file():
-        return values
-    for line in path.read_text().splitlines():
-        line = line.split("#", 1)[0].strip()
-        if line.startswith("subsection "):
-            section.append(line[len("subsection "):].strip())
-        elif line == "end" and section:
-            section.pop()
-        elif line.startswith("set ") and "=" in line:
-            key, value = line[4:].split("=", 1)
-            values["/".join(section + [key.strip()])] = value.strip()
-    return values
+    """Entries of a deal.II parameter file as {'Section/Entry': value} ({} if missing)."""
+    return bench_common.read_prm(path) if path.is_file() else {}
 
 
 def read_key_values(path):
@@ -95,9 +67,8 @@ class Run:
         info = read_key_values(self.dir / "run_status.txt")
         self.stats, self.reason = {}, info.get("reason", "")
         if (self.dir / "statistics.csv").is_file() and info.get("status") != "missing":
-            names, data = read_csv(self.dir / "statistics.csv")
             # 'wall_time(cumulative s)' and 'wall_time' both become 'wall_time'
-            self.stats = {n.split("(")[0].strip(): data[:, i] for i, n in enumerate(names)}
+            self.stats = bench_common.read_csv(self.dir / "statistics.csv", units=False)
         self.ok = len(self.stats.get("time", [])) > 0
         # parameters.prm of a run that was stopped can be empty: use the input file
         self.prm = read_prm(self.dir / "parameters.prm") or \
@@ -124,10 +95,10 @@ class Run:
         path = self.dir / "contact_history.csv"
         if not hasattr(self, "_history"):
             self._history, self.point = None, ""
-            names, data = read_csv(path) if path.is_file() else ([], [])
-            p = next((i for i, n in enumerate(names) if n.startswith("pressure")), None)
-            if p is not None and len(data):
-                self._history, self.point = (data[:, 0], data[:, p]), names[p][len("pressure"):]
+            columns = bench_common.read_csv(path) if path.is_file() else {}
+            p = next((n for n in columns if n.startswith("pressure")), None)
+            if p is not None and len(columns[p]):
+                self._history, self.point = (columns["time"], columns[p]), p[len("pressure"):]
         return self._history
 
     def snapshots(self):
@@ -281,11 +252,11 @@ def bouncing_block_figures(runs, figs, args, spans):
         if not shots:
             return None
         t, path = min(shots, key=lambda s: abs(s[0] - target))
-        names, d = read_csv(path)
-        c = {n: i for i, n in enumerate(names)}
-        d = d[d[:, c["pair"]] == 0]
-        d = d[np.argsort(d[:, c["x"]])]
-        return d[:, c["x"]], d[:, c["pressure"]], f"t = {t:g} s"
+        c = bench_common.read_csv(path)
+        first_pair = c["pair"] == 0
+        x, pressure = c["x"][first_pair], c["pressure"][first_pair]
+        order = np.argsort(x)
+        return x[order], pressure[order], f"t = {t:g} s"
 
     overlay(runs, figs / "bouncing_block_pressure_snapshot.png", snapshot,
             "contact pressure (Pa)", f"Bouncing block: contact pressure near t = {target:.3g} s",

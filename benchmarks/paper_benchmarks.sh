@@ -63,12 +63,13 @@ for v in "${variants[@]}"; do
   [ -z "$only" ] || [ "${v%%/*}" = "$only" ] && selected+=("$v")
 done
 
-entry() { # file, entry name -> value of 'set name = value'
-  sed -n "s|^ *set $2 *= *\(.*\)$|\1|p" "$1" | head -1
+common=benchmarks/bench_common.py # parameter files, CSV columns by name
+entry() { # file, Section/Entry -> its value
+  python3 $common get "$1" "$2"
 }
 
 output_dir() { # benchmark/variant -> its output directory
-  echo "$output_root/$(basename "$(entry "prm/$1.prm" "Output directory")")"
+  echo "$output_root/$(basename "$(entry "prm/$1.prm" "Output/Output directory")")"
 }
 
 run_one() { # benchmark/variant
@@ -77,9 +78,8 @@ run_one() { # benchmark/variant
   dir=$(output_dir "$1")
   rm -rf "$dir"
   mkdir -p "$dir"
-  if [ "$dir" != "$(entry "$prm" "Output directory")" ]; then
-    printf 'include %s\nsubsection Output\n  set Output directory = %s\nend\n' \
-      "$PWD/$prm" "$dir" > "$dir/run.prm"
+  if [ "$dir" != "$(entry "$prm" "Output/Output directory")" ]; then
+    python3 $common prm "$prm" "$dir/run.prm" "Output/Output directory=$dir"
     prm="$dir/run.prm"
   fi
   local start wall rc=0
@@ -113,8 +113,8 @@ progress() { # one line per running variant: simulated time / end time
     local prm="prm/$v.prm" dir
     dir=$(output_dir "$v")
     local t
-    t=$(tail -1 "$dir/statistics.csv" 2>/dev/null | cut -d, -f2)
-    printf '   ... %-32s t = %s of %s\n' "$v" "${t:-0}" "$(entry "$prm" "End time")"
+    t=$(python3 $common last "$dir/statistics.csv" time 2>/dev/null || true)
+    printf '   ... %-32s t = %s of %s\n' "$v" "${t:-0}" "$(entry "$prm" "Time integration/End time")"
   done
 }
 

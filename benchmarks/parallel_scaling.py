@@ -28,6 +28,9 @@ import sys
 import time
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import bench_common  # noqa: E402  (parameter files with changed entries)
+
 REPO = Path(__file__).resolve().parent.parent
 SCENES = {
     "hertz": ("prm/examples/hertz.prm", None),
@@ -40,18 +43,12 @@ SECTIONS = ["bulk assembly", "contact search", "contact assembly",
 
 def write_prm(path, scene, solver, directory):
     source, end_time = SCENES[scene]
-    lines = [f"include {REPO / source}",
-             "subsection Nonlinear solver",
-             f"  set Linear solver = {solver}",
-             "end",
-             "subsection Output",
-             f"  set Output directory = {directory}",
-             "  set VTU interval = 0",
-             "end"]
+    changes = {"Nonlinear solver/Linear solver": solver,
+               "Output/Output directory": directory,
+               "Output/VTU interval": 0}
     if end_time is not None:
-        lines += ["subsection Time integration",
-                  f"  set End time = {end_time}", "end"]
-    path.write_text("\n".join(lines) + "\n")
+        changes["Time integration/End time"] = end_time
+    bench_common.write_prm(path, REPO / source, changes)
 
 
 def parse(log):

@@ -14,23 +14,22 @@ exe=${BUILD_DIR:-build}/contact-dynamics
 [ -x "$exe" ] || ./run.sh build
 out=benchmarks/results
 mkdir -p "$out"
+common=benchmarks/bench_common.py # parameter files, CSV columns by name
 csv="$out/profile_contact.csv"
 sections=("bulk assembly" "contact search" "contact assembly" "linear solve" "output")
 echo "factor,secondary_nodes,cells,newton_iterations,total_s,bulk_assembly_s,contact_search_s,contact_assembly_s,linear_solve_s,output_s" > "$csv"
 for f in "${factors[@]}"; do
   dir="$out/profile_f$f"
-  sed -e "s|^\( *set Output directory *=\).*|\1 $dir|" \
-      -e "s|^\( *set VTU interval *=\).*|\1 0|" \
-      -e "s|^\( *set Time step *=\).*|\1 0.1|" \
-      -e "s|^\( *set Dirichlet *=\).*|\1 lower_bottom: xy: 0; upper_top: y: -1e-3*min(10*t, 1); upper_top: x: 0.05*t|" \
-      -e "s|^\( *set Scene *= patch test\)|\1\n  set Refinement factor = $f|" \
-      prm/examples/patch_test.prm > "$out/profile.prm"
+  python3 $common prm prm/examples/patch_test.prm "$out/profile.prm" \
+    "Output/Output directory=$dir" "Output/VTU interval=0" "Time integration/Time step=0.1" \
+    "Boundary conditions/Dirichlet=lower_bottom: xy: 0; upper_top: y: -1e-3*min(10*t, 1); upper_top: x: 0.05*t" \
+    "Scene/Refinement factor=$f"
   "$exe" "$out/profile.prm" > "$dir.log"
   time_of() { # section -> seconds
     awk -F'|' -v s="$1" '{n=$2; gsub(/^ +| +$/, "", n); if (n == s) {t=$4; gsub(/[ s]/, "", t); print t}}' "$dir.log"
   }
   cells=$(sed -n "s/.*: \([0-9]*\) cells.*/\1/p" "$dir.log")
-  newton=$(tail -1 "$dir/statistics.csv" | cut -d, -f5)
+  newton=$(python3 $common last "$dir/statistics.csv" cumulative_newton_iterations)
   total=$(sed -n 's/.*Total wallclock time elapsed since start *| *\([0-9.e+-]*\)s.*/\1/p' "$dir.log")
   row="$f,$((7 * f + 1)),$cells,$newton,$total"
   for s in "${sections[@]}"; do row="$row,$(time_of "$s")"; done

@@ -85,9 +85,9 @@ end
       {
         if (!simulator.advance(dt))
           check_true(stabilization + ": step converged", false);
-        const auto stats = simulator.get_contact()->statistics();
-        impulse += stats[1] * dt;
-        if (stats[0] > 0)
+        const auto stats = contact_statistics(*simulator.get_contact());
+        impulse += stats.at("contact_force_x") * dt;
+        if (stats.at("active_contact_nodes") > 0)
           {
             if (first < 0)
               first = simulator.current_time();

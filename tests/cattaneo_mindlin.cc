@@ -68,8 +68,9 @@ end
   const auto *contact =
     dynamic_cast<const ContactDynamics::SurfaceContact<2> *>(
       simulator.get_contact());
-  const auto   stats = contact->statistics();
-  const double P = stats[2], Q = std::abs(stats[1]), mu = 0.3;
+  const auto   stats = contact_statistics(*contact);
+  const double P     = stats.at("contact_force_y"),
+               Q = std::abs(stats.at("contact_force_x")), mu = 0.3;
   const double E_star = 1000 / (2 * (1 - 0.3 * 0.3));
   const double a      = std::sqrt(4 * P / (M_PI * E_star));
   const double c      = a * std::sqrt(1 - Q / (mu * P));

@@ -88,20 +88,20 @@ end
       {
         if (!simulator.advance(0.05))
           check_true(formulation + ": step converged", false);
-        const auto   stats = simulator.get_contact()->statistics();
-        const double T     = std::abs(stats[1]);
-        const double N     = stats[2];
+        const auto   stats = contact_statistics(*simulator.get_contact());
+        const double T     = std::abs(stats.at("contact_force_x"));
+        const double N     = stats.at("contact_force_y");
         if (simulator.current_time() > 1 + 1e-9 && T < 0.5 * mu * N)
           {
             stuck_phase = true;
-            if (stats[5] != 0)
+            if (stats.at("slip_nodes") != 0)
               check_true(formulation + ": no slip node below mu N / 2", false);
           }
         for (const auto &node : contact->node_states(0))
           if (node.stick)
             worst_stick_slip =
               std::max(worst_stick_slip, std::abs(node.slip_rate) * 0.05);
-        if (stats[4] == 0 && stats[5] > 0)
+        if (stats.at("stick_nodes") == 0 && stats.at("slip_nodes") > 0)
           {
             slid_phase = true;
             worst_force_ratio =
@@ -113,7 +113,7 @@ end
                                                        (mu * node.pressure) -
                                                      1));
           }
-        if (stats[5] > 0 && onset < 0)
+        if (stats.at("slip_nodes") > 0 && onset < 0)
           onset = T / (mu * N);
       }
     deallog << formulation

@@ -81,7 +81,8 @@ end
         simulator.get_contact());
     const auto  &surface = mortar->secondary_surface(0);
     const auto  &nodes   = mortar->node_states(0);
-    const double P       = simulator.get_contact()->statistics()[2];
+    const double P =
+      contact_statistics(*simulator.get_contact()).at("contact_force_y");
 
     const double E = 1000, nu = 0.3, R = 1;
     const double E_star = E / (2 * (1 - nu * nu));

@@ -11,6 +11,8 @@
 
 #include <contact_dynamics/application.h>
 
+#include "tests.h"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -76,34 +78,26 @@ main(int argc, char **argv)
   const std::string directory = prm.get("Output directory");
   prm.leave_subsection();
 
-  std::ifstream csv(directory + "/statistics.csv");
-  std::string   header, line;
-  std::getline(csv, header);
-  const auto columns = Utilities::split_string_list(header);
-  std::vector<std::vector<double>> rows;
-  while (std::getline(csv, line))
-    rows.push_back(
-      Utilities::string_to_double(Utilities::split_string_list(line)));
-  const auto col = [&](const std::string &name) {
-    return std::find(columns.begin(), columns.end(), name) - columns.begin();
+  const auto s    = read_csv_columns(directory + "/statistics.csv");
+  const auto last = [&](const std::string &name) {
+    return s.at(name).back();
   };
 
   double scale = 0, worst = 0;
-  for (const auto &r : rows)
+  for (unsigned int i = 0; i < s.at("step").size(); ++i)
     {
       scale = std::max({scale,
-                        r[col("kinetic_energy")] + r[col("elastic_energy")],
-                        std::abs(r[col("external_work")]),
-                        r[col("damping_dissipation")]});
-      worst = std::max(worst, std::abs(r[col("energy_balance_error")]));
+                        s.at("kinetic_energy")[i] + s.at("elastic_energy")[i],
+                        std::abs(s.at("external_work")[i]),
+                        s.at("damping_dissipation")[i]});
+      worst = std::max(worst, std::abs(s.at("energy_balance_error")[i]));
     }
   const double tolerance = stated_tolerance(filename);
-  const auto  &last      = rows.back();
-  output << "steps: " << last[col("step")] << std::endl
-         << "final time: " << significant(last[col("time")], 6) << std::endl
-         << "final kinetic energy: " << significant(last[col("kinetic_energy")])
+  output << "steps: " << last("step") << std::endl
+         << "final time: " << significant(last("time"), 6) << std::endl
+         << "final kinetic energy: " << significant(last("kinetic_energy"))
          << std::endl
-         << "final elastic energy: " << significant(last[col("elastic_energy")])
+         << "final elastic energy: " << significant(last("elastic_energy"))
          << std::endl
          << "energy balance error below " << tolerance
          << " of the energy scale: "

@@ -56,6 +56,7 @@ check_true(const std::string &name, const bool condition)
 #include <deal.II/base/utilities.h>
 
 #include <contact_dynamics/application.h>
+#include <contact_dynamics/contact/contact_formulation.h>
 
 #include <functional>
 #include <map>
@@ -82,7 +83,9 @@ mean_velocity_x(const Simulator &simulator, const unsigned int body)
   return momentum / mass;
 }
 
-// The columns of a CSV file (a header line of names, then numbers) by name.
+// The columns of a CSV file (a header line of names, then numbers) by name:
+// statistics.csv and contact_history.csv are read only through this, so
+// that no test depends on the order of the columns.
 inline std::map<std::string, std::vector<double>>
 read_csv_columns(const std::string &filename)
 {
@@ -98,6 +101,22 @@ read_csv_columns(const std::string &filename)
         columns[names[i]].push_back(std::stod(values[i]));
     }
   return columns;
+}
+
+// The contact columns of the statistics.csv row of the current step by name
+// (statistics_columns() names the values of statistics()).
+template <int dim>
+std::map<std::string, double>
+contact_statistics(const ContactDynamics::ContactFormulation<dim> &contact)
+{
+  const auto names  = contact.statistics_columns();
+  const auto values = contact.statistics();
+  AssertThrow(names.size() == values.size(),
+              dealii::ExcDimensionMismatch(names.size(), values.size()));
+  std::map<std::string, double> row;
+  for (unsigned int i = 0; i < names.size(); ++i)
+    row[names[i]] = values[i];
+  return row;
 }
 
 // Writes `text` to `filename` and reads it as the application would.
