@@ -1,7 +1,9 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
 #include <contact_dynamics/parallel.h>
+#include <contact_dynamics/parameters.h>
 
 #include <exception>
 #include <sstream>
@@ -42,13 +44,20 @@ namespace ContactDynamics
     AssertThrow(failure.empty(), ExcMessage(failure));
   }
 
+  namespace
+  {
+    const Selection<ParallelParameters::Partitioner> partitioner_names{
+      {ParallelParameters::Partitioner::metis, "metis"},
+      {ParallelParameters::Partitioner::z_order, "z-order"}};
+  } // namespace
+
   void
   ParallelParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.declare_entry(
       "Partitioner",
-      "metis",
-      Patterns::Selection("metis|z-order"),
+      partitioner_names.name(ParallelParameters().partitioner),
+      partitioner_names.pattern(),
       "How the cells are divided among the MPI processes (every process "
       "keeps the whole mesh, a parallel::shared::Triangulation, and "
       "assembles its own cells and the contact conditions of its own "
@@ -60,7 +69,13 @@ namespace ContactDynamics
   void
   ParallelParameters::parse_parameters(ParameterHandler &prm)
   {
-    partitioner = prm.get("Partitioner");
+    partitioner = partitioner_names.value(prm.get("Partitioner"));
+  }
+
+  const std::string &
+  ParallelParameters::partitioner_name() const
+  {
+    return partitioner_names.name(partitioner);
   }
 
   IndexSet

@@ -9,9 +9,11 @@
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_solver.h>
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <contact_dynamics/parameters.h>
 #include <contact_dynamics/simulator.h>
 
 #include <cmath>
@@ -21,18 +23,6 @@
 
 namespace ContactDynamics
 {
-  namespace
-  {
-    // 6 significant digits: std::to_string writes 1e-7 as 0.000000
-    std::string
-    number(const double x)
-    {
-      std::ostringstream out;
-      out << x;
-      return out.str();
-    }
-  } // namespace
-
   template <int dim>
   void
   Simulator<dim>::declare_parameters(ParameterHandler  &prm,
@@ -51,17 +41,6 @@ namespace ContactDynamics
 
     prm.enter_subsection("Time integration");
     TimeIntegrator::declare_parameters(prm);
-    prm.declare_entry("Time step",
-                      "0.025",
-                      Patterns::Double(1e-300),
-                      "Nominal time step (> 0). Steps are halved when a "
-                      "Newton solve fails and grow back to this value.");
-    prm.declare_entry("End time", "1", Patterns::Double(0), "End time (>= 0).");
-    prm.declare_entry("Minimum time step",
-                      "1e-6",
-                      Patterns::Double(1e-300),
-                      "The run stops with an error when a failed step would "
-                      "need a time step below this value (> 0).");
     prm.leave_subsection();
 
     prm.enter_subsection("Nonlinear solver");
@@ -104,15 +83,7 @@ namespace ContactDynamics
 
     prm.enter_subsection("Time integration");
     integrator.parse_parameters(prm);
-    time_step         = prm.get_double("Time step");
-    end_time          = prm.get_double("End time");
-    minimum_time_step = prm.get_double("Minimum time step");
     prm.leave_subsection();
-    AssertThrow(minimum_time_step <= time_step,
-                ExcMessage("Time integration/Minimum time step = " +
-                           number(minimum_time_step) +
-                           " exceeds Time integration/Time step = " +
-                           number(time_step) + "."));
 
     prm.enter_subsection("Nonlinear solver");
     newton.parse_parameters(prm);
@@ -144,7 +115,8 @@ namespace ContactDynamics
       mpi_communicator,
       Triangulation<dim>::none,
       false,
-      parallel_parameters.partitioner == "metis" ?
+      parallel_parameters.partitioner ==
+          ParallelParameters::Partitioner::metis ?
         parallel::shared::Triangulation<dim>::partition_metis :
         parallel::shared::Triangulation<dim>::partition_zorder);
     scene.create_triangulation(*triangulation);
@@ -247,9 +219,8 @@ namespace ContactDynamics
 
   template <int dim>
   void
-  Simulator<dim>::apply_initial_conditions()
+  Simulator<dim>::interpolate_initial_state()
   {
-    TimerOutput::Scope t(timer, "initial conditions");
     const unsigned int n_components = fe->n_components();
     std::vector<std::unique_ptr<FunctionParser<dim>>>   functions;
     std::map<types::material_id, const Function<dim> *> u_map, v_map;
@@ -291,6 +262,14 @@ namespace ContactDynamics
                                                   dof_handler,
                                                   v_map,
                                                   v);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::apply_initial_conditions()
+  {
+    TimerOutput::Scope t(timer, "initial conditions");
+    interpolate_initial_state();
     a = 0;
 
     // The prescribed motion wins at Dirichlet degrees of freedom; its rate
@@ -299,7 +278,7 @@ namespace ContactDynamics
     std::map<types::global_dof_index, double> v_dirichlet, a_dirichlet;
     dirichlet.rates(dof_handler,
                     0.,
-                    1e-4 * time_step,
+                    1e-4 * integrator.time_step(),
                     v_dirichlet,
                     a_dirichlet);
     for (const auto &p : dirichlet.values(dof_handler, 0.))
@@ -373,13 +352,16 @@ namespace ContactDynamics
         if (contact->update_candidates(u_ghost))
           setup_sparsity();
         VectorType contact_residual(residual), contact_full(residual_full_old);
-        contact->assemble(
-          TrialState{u_ghost, v_ghost, 0., time_step, integrator.is_dynamic()},
-          increment_constraints,
-          false,
-          contact_residual,
-          jacobian,
-          contact_full);
+        contact->assemble(TrialState{u_ghost,
+                                     v_ghost,
+                                     0.,
+                                     integrator.time_step(),
+                                     integrator.is_dynamic()},
+                          increment_constraints,
+                          false,
+                          contact_residual,
+                          jacobian,
+                          contact_full);
         contact->check_initial_state(screen_log());
       }
 
@@ -452,7 +434,7 @@ namespace ContactDynamics
                                  contact ? contact->n_owned_contact_nodes() :
                                            0u);
         pcout << n_processes << " MPI processes ("
-              << parallel_parameters.partitioner
+              << parallel_parameters.partitioner_name()
               << " partition); cells / unknowns / secondary contact nodes:";
         for (unsigned int p = 0; p < cells.size(); ++p)
           pcout << (p ? ", " : " ") << cells[p] << " / " << unknowns[p] << " / "
@@ -740,9 +722,12 @@ namespace ContactDynamics
   Simulator<dim>::run()
   {
     initialize();
-    double       dt              = time_step;
-    unsigned int good_since_cut  = 0;
-    bool         last_step_wrote = true;
+    const double time_step         = integrator.time_step();
+    const double end_time          = integrator.end_time();
+    const double minimum_time_step = integrator.minimum_time_step();
+    double       dt                = time_step;
+    unsigned int good_since_cut    = 0;
+    bool         last_step_wrote   = true;
     while (time < end_time - 1e-9 * time_step)
       {
         const double dt_try = std::min(dt, end_time - time);
@@ -764,9 +749,9 @@ namespace ContactDynamics
             AssertThrow(dt >= minimum_time_step,
                         ExcMessage(
                           "The time step would have to be cut to " +
-                          number(dt) + " at t = " + number(time) +
+                          format_number(dt) + " at t = " + format_number(time) +
                           ", below Time integration/Minimum time step = " +
-                          number(minimum_time_step) +
+                          format_number(minimum_time_step) +
                           " (the last attempt: " + last_failure +
                           "). The run stops here; statistics.csv and the VTU "
                           "files in '" +

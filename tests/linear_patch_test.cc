@@ -105,7 +105,7 @@ end
                 1e-10);
 
     ContactDynamics::MaterialParameters p;
-    p.model          = model;
+    p.model          = ContactDynamics::MaterialParameters::model_named(model);
     p.youngs_modulus = 1000;
     p.poissons_ratio = 0.25;
     Tensor<2, 2> P;

@@ -92,9 +92,9 @@ end
   grad_u[0] = gradient[0];
   grad_u[1] = gradient[1];
   ContactDynamics::MaterialParameters p;
-  p.model                     = "neo-Hookean";
-  p.youngs_modulus            = E;
-  p.poissons_ratio            = nu;
+  p.model          = ContactDynamics::MaterialParameters::Model::neo_hookean;
+  p.youngs_modulus = E;
+  p.poissons_ratio = nu;
   const auto         material = ContactDynamics::create_material<2>(p);
   const Tensor<2, 3> sigma    = material->cauchy_stress(grad_u);
   check_close("sigma_11 / closed form", sigma[0][0] / sigma11, 1., 1e-9);

@@ -20,9 +20,9 @@ namespace
   check_material(const std::string &model)
   {
     ContactDynamics::MaterialParameters p;
-    p.model             = model;
-    p.youngs_modulus    = 3.;
-    p.poissons_ratio    = 0.3;
+    p.model          = ContactDynamics::MaterialParameters::model_named(model);
+    p.youngs_modulus = 3.;
+    p.poissons_ratio = 0.3;
     const auto material = ContactDynamics::create_material<2>(p);
 
     Tensor<2, 2> grad_u;

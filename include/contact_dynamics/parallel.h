@@ -6,10 +6,13 @@
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/parameter_handler.h>
 
 #include <functional>
 #include <string>
+
+DEAL_II_NAMESPACE_OPEN
+class ParameterHandler;
+DEAL_II_NAMESPACE_CLOSE
 
 namespace ContactDynamics
 {
@@ -29,12 +32,22 @@ namespace ContactDynamics
   /** The `Parallel` subsection. */
   struct ParallelParameters
   {
-    std::string partitioner = "metis";
+    enum class Partitioner
+    {
+      metis,
+      z_order
+    };
+
+    Partitioner partitioner = Partitioner::metis; // the default
 
     static void
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
+
+    /** The name of the partitioner in the parameter file. */
+    const std::string &
+    partitioner_name() const;
   };
 
   /** The union over all processes of the given sets. */

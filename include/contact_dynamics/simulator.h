@@ -168,6 +168,9 @@ namespace ContactDynamics
     setup_system();
     void
     setup_sparsity();
+    /** u and v at t = 0 from the bodies' initial conditions. */
+    void
+    interpolate_initial_state();
     void
     apply_initial_conditions();
     void
@@ -199,9 +202,6 @@ namespace ContactDynamics
     MatrixType       jacobian;
     NewtonSolver     newton;
     OutputParameters output_parameters;
-    double           time_step;
-    double           end_time;
-    double           minimum_time_step;
 
     MPI_Comm                                              mpi_communicator;
     ParallelParameters                                    parallel_parameters;

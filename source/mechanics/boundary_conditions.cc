@@ -1,4 +1,6 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
 #include <deal.II/numerics/vector_tools.h>

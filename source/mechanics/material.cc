@@ -1,43 +1,53 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <contact_dynamics/mechanics/material.h>
+#include <contact_dynamics/parameters.h>
 
 #include <cmath>
 
 namespace ContactDynamics
 {
+  namespace
+  {
+    const Selection<MaterialParameters::Model> model_names{
+      {MaterialParameters::Model::linear_elastic, "linear elastic"},
+      {MaterialParameters::Model::neo_hookean, "neo-Hookean"}};
+  } // namespace
+
   void
   MaterialParameters::declare_parameters(ParameterHandler &prm)
   {
+    const MaterialParameters defaults;
     prm.declare_entry("Material model",
-                      "linear elastic",
-                      Patterns::Selection("linear elastic|neo-Hookean"),
+                      model_names.name(defaults.model),
+                      model_names.pattern(),
                       "Constitutive model. 'linear elastic': small strain, "
                       "the residual is linear in the displacement (cheapest). "
                       "'neo-Hookean': compressible neo-Hookean, finite strain, "
                       "total Lagrangian, W = mu/2 (tr C - 3) - mu ln J + "
                       "lambda/2 (ln J)^2.");
     prm.declare_entry("Young's modulus",
-                      "1e6",
+                      default_text(defaults.youngs_modulus),
                       Patterns::Double(1e-300),
                       "Young's modulus E (> 0), in stress units.");
     prm.declare_entry("Poisson's ratio",
-                      "0.3",
+                      default_text(defaults.poissons_ratio),
                       Patterns::Double(-0.999, 0.4999),
                       "Poisson's ratio nu, in [-0.999, 0.4999].");
     prm.declare_entry("Density",
-                      "1",
+                      default_text(defaults.density),
                       Patterns::Double(1e-300),
                       "Mass density rho (> 0), mass per unit volume.");
     prm.declare_entry("Rayleigh mass coefficient",
-                      "0",
+                      default_text(defaults.rayleigh_mass_coefficient),
                       Patterns::Double(0),
                       "alpha in the damping matrix C = alpha M + beta K0 "
                       "(1/time, >= 0).");
     prm.declare_entry(
       "Rayleigh stiffness coefficient",
-      "0",
+      default_text(defaults.rayleigh_stiffness_coefficient),
       Patterns::Double(0),
       "beta in C = alpha M + beta K0 (time, >= 0); K0 is the small-strain "
       "stiffness of the unloaded body, so C is constant and dissipative for "
@@ -47,13 +57,19 @@ namespace ContactDynamics
   void
   MaterialParameters::parse_parameters(ParameterHandler &prm)
   {
-    model                     = prm.get("Material model");
+    model                     = model_named(prm.get("Material model"));
     youngs_modulus            = prm.get_double("Young's modulus");
     poissons_ratio            = prm.get_double("Poisson's ratio");
     density                   = prm.get_double("Density");
     rayleigh_mass_coefficient = prm.get_double("Rayleigh mass coefficient");
     rayleigh_stiffness_coefficient =
       prm.get_double("Rayleigh stiffness coefficient");
+  }
+
+  MaterialParameters::Model
+  MaterialParameters::model_named(const std::string &name)
+  {
+    return model_names.value(name);
   }
 
   double
@@ -231,11 +247,8 @@ namespace ContactDynamics
   std::unique_ptr<Material<dim>>
   create_material(const MaterialParameters &parameters)
   {
-    if (parameters.model == "linear elastic")
+    if (parameters.model == MaterialParameters::Model::linear_elastic)
       return std::make_unique<LinearElastic<dim>>(parameters);
-    AssertThrow(parameters.model == "neo-Hookean",
-                ExcMessage("Unknown material model '" + parameters.model +
-                           "'; allowed: linear elastic, neo-Hookean."));
     return std::make_unique<NeoHookean<dim>>(parameters);
   }
 

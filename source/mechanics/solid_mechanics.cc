@@ -2,8 +2,8 @@
 
 #include <deal.II/fe/fe_values.h>
 
-#include <contact_dynamics/parallel.h>
 #include <contact_dynamics/mechanics/solid_mechanics.h>
+#include <contact_dynamics/parallel.h>
 
 namespace ContactDynamics
 {

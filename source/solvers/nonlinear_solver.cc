@@ -1,32 +1,100 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <contact_dynamics/parameters.h>
 #include <contact_dynamics/solvers/nonlinear_solver.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <memory>
+#include <ostream>
 #include <sstream>
 
 namespace ContactDynamics
 {
+  namespace
+  {
+    /**
+     * The residual norms of the last two iterations and what follows from
+     * them: whether the residual stagnated at round-off, and the damping
+     * of the next update. Semi-smooth Newton can cycle between two active
+     * sets (stick and slip, say): the residual then repeats every other
+     * iteration; damped updates break the cycle.
+     */
+    class ResidualHistory
+    {
+    public:
+      ResidualHistory(const double step_tolerance, const bool cycle_damping)
+        : step_tolerance(step_tolerance)
+        , cycle_damping(cycle_damping)
+      {}
+
+      /** Round-off: the residual stopped falling and the update is tiny. */
+      bool
+      stagnated(const unsigned int it, const double norm) const
+      {
+        return it > 0 && norm > 0.5 * previous_norm &&
+               step_ratio <= step_tolerance;
+      }
+
+      /**
+       * Records the residual norm of iteration `it` and adapts the damping;
+       * true if it detected a cycle.
+       */
+      bool
+      record(const unsigned int it, const double norm)
+      {
+        bool cycle = false;
+        if (damping < 1 && norm < 0.5 * previous_norm)
+          damping = 1; // out of the cycle: full Newton steps again
+        else if (cycle_damping && it > 1 &&
+                 std::abs(norm - older_norm) <= 1e-3 * norm &&
+                 std::abs(norm - previous_norm) > 1e-2 * norm)
+          {
+            damping = std::max(damping / 2, 1. / 16);
+            cycle   = true;
+          }
+        older_norm    = previous_norm;
+        previous_norm = norm;
+        return cycle;
+      }
+
+      double damping    = 1;
+      double step_ratio = 0; // |du| / |u| of the last update
+
+    private:
+      const double step_tolerance;
+      const bool   cycle_damping;
+      double       previous_norm = 0;
+      double       older_norm    = -1;
+    };
+  } // namespace
+
   void
   NewtonSolver::declare_parameters(ParameterHandler &prm)
   {
+    const NewtonSolver defaults;
     prm.declare_entry("Absolute tolerance",
-                      "1e-10",
+                      default_text(defaults.absolute_tolerance),
                       Patterns::Double(0),
                       "Converged when the l2 norm of the residual (forces at "
                       "free degrees of freedom) is below this value (force "
                       "units, >= 0).");
     prm.declare_entry("Relative tolerance",
-                      "1e-10",
+                      default_text(defaults.relative_tolerance),
                       Patterns::Double(0, 1),
                       "... or below this fraction of the residual at the "
                       "first iteration of the time step, in [0, 1).");
     prm.declare_entry(
       "Step tolerance",
-      "1e-12",
+      default_text(defaults.step_tolerance),
       Patterns::Double(0, 1),
       "... or, once the residual stagnates (it fell by less than half in "
       "the last iteration), when the l2 norm of the last Newton update is "
@@ -36,7 +104,7 @@ namespace ContactDynamics
       "the criterion off.");
     prm.declare_entry(
       "Cycle damping",
-      "true",
+      default_text(defaults.cycle_damping),
       Patterns::Bool(),
       "Semi-smooth Newton can cycle between two active sets (stick and "
       "slip, contact and no contact): the residual then repeats every other "
@@ -45,64 +113,81 @@ namespace ContactDynamics
       "iterations never trigger it. Without it, ironing with mu = 1 stops "
       "after first contact (doc/extreme-cases.md).");
     prm.declare_entry("Maximum iterations",
-                      "25",
+                      default_text(defaults.max_iterations),
                       Patterns::Integer(1, 1000),
                       "Newton iterations (linear solves) allowed per time "
                       "step before the step is cut, in [1, 1000].");
-    prm.declare_entry(
-      "Linear solver",
-      "KLU",
-      Patterns::Selection("KLU|MUMPS|GMRES"),
-      "KLU and MUMPS are sparse direct solvers (Trilinos Amesos). KLU "
-      "factorizes on one process (with mpirun the matrix is gathered there): "
-      "fastest for the 2-D scenes of the paper. MUMPS factorizes in parallel. "
-      "GMRES is iterative, preconditioned by additive Schwarz with an exact "
-      "(KLU) solve of each process's block: the blocks keep the saddle-point "
-      "structure of the contact rows intact, which incomplete factorizations "
-      "and AMG do not handle; on one process it is a direct solve. See "
-      "doc/parallel.md for what each costs.");
-    prm.declare_entry("Linear tolerance",
-                      "1e-6",
-                      Patterns::Double(1e-300, 1),
-                      "GMRES: solve to this fraction of the residual norm, "
-                      "in (0, 1). Newton still converges to its own "
-                      "tolerances (an inexact Newton method), only with more "
-                      "iterations when this is large. Contact makes the "
-                      "system ill-conditioned: below about 1e-8 GMRES can "
-                      "fail with a loss of precision.");
-    prm.declare_entry("Maximum linear iterations",
-                      "1000",
-                      Patterns::Integer(1),
-                      "GMRES: iterations (restarted every 100) before the "
-                      "solve counts as failed and the time step is cut.");
     prm.declare_entry("Verbose",
-                      "false",
+                      default_text(defaults.verbose_),
                       Patterns::Bool(),
                       "Print the residual of every Newton iteration.");
+    LinearSolver::declare_parameters(prm);
   }
 
   void
   NewtonSolver::parse_parameters(ParameterHandler &prm)
   {
-    absolute_tolerance    = prm.get_double("Absolute tolerance");
-    relative_tolerance    = prm.get_double("Relative tolerance");
-    step_tolerance        = prm.get_double("Step tolerance");
-    cycle_damping         = prm.get_bool("Cycle damping");
-    max_iterations        = prm.get_integer("Maximum iterations");
-    linear_solver         = prm.get("Linear solver");
-    linear_tolerance      = prm.get_double("Linear tolerance");
-    max_linear_iterations = prm.get_integer("Maximum linear iterations");
-    verbose_              = prm.get_bool("Verbose");
+    absolute_tolerance = prm.get_double("Absolute tolerance");
+    relative_tolerance = prm.get_double("Relative tolerance");
+    step_tolerance     = prm.get_double("Step tolerance");
+    cycle_damping      = prm.get_bool("Cycle damping");
+    max_iterations     = prm.get_integer("Maximum iterations");
+    verbose_           = prm.get_bool("Verbose");
+    linear_solver.parse_parameters(prm, verbose_);
   }
 
-  void
-  NewtonSolver::release_factorization()
+  bool
+  NewtonSolver::assemble(NonlinearSystem                &system,
+                         TrilinosWrappers::MPI::Vector  &residual,
+                         TrilinosWrappers::SparseMatrix &jacobian,
+                         Result                         &result)
   {
-    // the solver refers to its control, so it goes first
-    direct_solver.reset();
-    solver_control.reset();
-    preconditioner.reset();
-    factorization_valid = false;
+    try
+      {
+        system.assemble(linear_solver.needs_matrix(), residual, jacobian);
+        return true;
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream message;
+        e.print_info(message);
+        result.failure = Utilities::trim(message.str());
+      }
+    catch (const std::exception &e)
+      {
+        result.failure = e.what();
+      }
+    linear_solver.invalidate();
+    return false;
+  }
+
+  bool
+  NewtonSolver::solve_linear_system(
+    const TrilinosWrappers::SparseMatrix &jacobian,
+    TrilinosWrappers::MPI::Vector        &residual,
+    TrilinosWrappers::MPI::Vector        &increment,
+    const double                          residual_norm,
+    const bool                            keep,
+    Result                               &result)
+  {
+    try
+      {
+        std::unique_ptr<TimerOutput::Scope> scope;
+        if (timer)
+          scope = std::make_unique<TimerOutput::Scope>(*timer, "linear solve");
+        result.linear_iterations += linear_solver.solve(jacobian,
+                                                        residual,
+                                                        increment,
+                                                        residual_norm,
+                                                        keep);
+        return true;
+      }
+    catch (const std::exception &e)
+      {
+        result.failure = std::string("the linear solver failed: ") + e.what();
+        linear_solver.invalidate();
+        return false;
+      }
   }
 
   NewtonSolver::Result
@@ -116,34 +201,13 @@ namespace ContactDynamics
     Result     result;
     const bool reuse = system.jacobian_is_constant();
     if (structure_changed || !reuse)
-      factorization_valid = false;
+      linear_solver.invalidate();
 
-    double previous_norm = 0, step_ratio = 0;
-    // semi-smooth Newton can cycle between two active sets (stick and slip,
-    // say): the residual then repeats every other iteration; damped
-    // updates break the cycle
-    double older_norm = -1, damping = 1;
+    ResidualHistory history(step_tolerance, cycle_damping);
     for (unsigned int it = 0;; ++it)
       {
-        const bool need_jacobian = !factorization_valid;
-        try
-          {
-            system.assemble(need_jacobian, residual, jacobian);
-          }
-        catch (const ExceptionBase &e)
-          {
-            std::ostringstream message;
-            e.print_info(message);
-            result.failure      = Utilities::trim(message.str());
-            factorization_valid = false;
-            return result;
-          }
-        catch (const std::exception &e)
-          {
-            result.failure      = e.what();
-            factorization_valid = false;
-            return result;
-          }
+        if (!assemble(system, residual, jacobian, result))
+          return result;
         const double norm = residual.l2_norm();
         if (it == 0)
           result.initial_residual = norm;
@@ -154,26 +218,14 @@ namespace ContactDynamics
               << std::defaultfloat << std::endl;
         if (!std::isfinite(norm))
           {
-            result.failure      = "the residual is not a finite number";
-            factorization_valid = false;
+            result.failure = "the residual is not a finite number";
+            linear_solver.invalidate();
             return result;
           }
-        // round-off: the residual stopped falling and the update is tiny
-        const bool stagnated =
-          it > 0 && norm > 0.5 * previous_norm && step_ratio <= step_tolerance;
-        if (damping < 1 && norm < 0.5 * previous_norm)
-          damping = 1; // out of the cycle: full Newton steps again
-        else if (cycle_damping && it > 1 &&
-                 std::abs(norm - older_norm) <= 1e-3 * norm &&
-                 std::abs(norm - previous_norm) > 1e-2 * norm)
-          {
-            damping = std::max(damping / 2, 1. / 16);
-            if (verbose_)
-              log << "    (cycle detected: damping " << damping << ")"
-                  << std::endl;
-          }
-        older_norm    = previous_norm;
-        previous_norm = norm;
+        const bool stagnated = history.stagnated(it, norm);
+        if (history.record(it, norm) && verbose_)
+          log << "    (cycle detected: damping " << history.damping << ")"
+              << std::endl;
         if ((norm <= absolute_tolerance ||
              norm <= relative_tolerance * result.initial_residual ||
              stagnated) &&
@@ -190,73 +242,24 @@ namespace ContactDynamics
             return result;
           }
 
-        try
-          {
-            std::unique_ptr<TimerOutput::Scope> scope;
-            if (timer)
-              scope =
-                std::make_unique<TimerOutput::Scope>(*timer, "linear solve");
-            if (linear_solver == "GMRES")
-              {
-                if (need_jacobian)
-                  {
-                    release_factorization();
-                    preconditioner = std::make_unique<
-                      TrilinosWrappers::PreconditionBlockwiseDirect>();
-                    preconditioner->initialize(jacobian);
-                    factorization_valid = reuse;
-                  }
-                residual *= -1.;
-                SolverControl                 control(max_linear_iterations,
-                                      linear_tolerance * norm,
-                                      false,
-                                      false);
-                TrilinosWrappers::SolverGMRES gmres(
-                  control,
-                  TrilinosWrappers::SolverGMRES::AdditionalData(verbose_, 100));
-                increment = 0;
-                gmres.solve(jacobian, increment, residual, *preconditioner);
-                result.linear_iterations += control.last_step();
-              }
-            else if (need_jacobian)
-              {
-                release_factorization();
-                solver_control =
-                  std::make_unique<SolverControl>(1, 0, false, false);
-                direct_solver =
-                  std::make_unique<TrilinosWrappers::SolverDirect>(
-                    *solver_control,
-                    TrilinosWrappers::SolverDirect::AdditionalData(
-                      false,
-                      linear_solver == "MUMPS" ? "Amesos_Mumps" :
-                                                 "Amesos_Klu"));
-                direct_solver->initialize(jacobian);
-                factorization_valid = reuse;
-              }
-            // Newton: J du = -R
-            if (linear_solver != "GMRES")
-              {
-                residual *= -1.;
-                direct_solver->solve(increment, residual);
-              }
-          }
-        catch (const std::exception &e)
-          {
-            result.failure =
-              std::string("the linear solver failed: ") + e.what();
-            factorization_valid = false;
-            return result;
-          }
+        if (!solve_linear_system(jacobian,
+                                 residual,
+                                 increment,
+                                 norm,
+                                 reuse,
+                                 result))
+          return result;
         ++result.iterations;
-        if (damping < 1)
-          increment *= damping;
+        if (history.damping < 1)
+          increment *= history.damping;
         system.apply_update(increment);
         const double iterate = system.iterate_norm();
-        step_ratio           = iterate > 0 ? increment.l2_norm() / iterate :
-                                             std::numeric_limits<double>::infinity();
+        history.step_ratio   = iterate > 0 ?
+                                 increment.l2_norm() / iterate :
+                                 std::numeric_limits<double>::infinity();
         if (verbose_)
           log << "              |du| / |u| = " << std::scientific
-              << std::setprecision(3) << step_ratio << std::defaultfloat
+              << std::setprecision(3) << history.step_ratio << std::defaultfloat
               << std::endl;
       }
   }

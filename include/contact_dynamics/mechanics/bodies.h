@@ -3,8 +3,6 @@
 #ifndef contact_dynamics_mechanics_bodies_h
 #define contact_dynamics_mechanics_bodies_h
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <contact_dynamics/mechanics/material.h>
 
 #include <string>

@@ -2,9 +2,6 @@
 #ifndef contact_dynamics_mechanics_boundary_conditions_h
 #define contact_dynamics_mechanics_boundary_conditions_h
 
-#include <deal.II/base/function_parser.h>
-#include <deal.II/base/parameter_handler.h>
-
 #include <deal.II/dofs/dof_handler.h>
 
 #include <deal.II/fe/component_mask.h>
@@ -15,6 +12,12 @@
 #include <memory>
 #include <string>
 #include <vector>
+
+DEAL_II_NAMESPACE_OPEN
+class ParameterHandler;
+template <int dim>
+class FunctionParser;
+DEAL_II_NAMESPACE_CLOSE
 
 namespace ContactDynamics
 {

@@ -4,11 +4,14 @@
 #ifndef contact_dynamics_mechanics_material_h
 #define contact_dynamics_mechanics_material_h
 
-#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
 
 #include <memory>
 #include <string>
+
+DEAL_II_NAMESPACE_OPEN
+class ParameterHandler;
+DEAL_II_NAMESPACE_CLOSE
 
 namespace ContactDynamics
 {
@@ -17,17 +20,28 @@ namespace ContactDynamics
   /** Parameters of one body's material, read from `subsection Body <name>`. */
   struct MaterialParameters
   {
-    std::string model                          = "linear elastic";
-    double      youngs_modulus                 = 1.;
-    double      poissons_ratio                 = 0.;
-    double      density                        = 1.;
-    double      rayleigh_mass_coefficient      = 0.;
-    double      rayleigh_stiffness_coefficient = 0.;
+    enum class Model
+    {
+      linear_elastic,
+      neo_hookean
+    };
+
+    // the defaults of the parameter file
+    Model  model                          = Model::linear_elastic;
+    double youngs_modulus                 = 1e6;
+    double poissons_ratio                 = 0.3;
+    double density                        = 1.;
+    double rayleigh_mass_coefficient      = 0.;
+    double rayleigh_stiffness_coefficient = 0.;
 
     static void
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
+
+    /** The model of a `Material model` entry ("linear elastic", ...). */
+    static Model
+    model_named(const std::string &name);
 
     double
     lame_lambda() const;

@@ -2,9 +2,11 @@
 #ifndef contact_dynamics_mechanics_time_integrator_h
 #define contact_dynamics_mechanics_time_integrator_h
 
-#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/config.h>
 
-#include <string>
+DEAL_II_NAMESPACE_OPEN
+class ParameterHandler;
+DEAL_II_NAMESPACE_CLOSE
 
 namespace ContactDynamics
 {
@@ -15,11 +17,25 @@ namespace ContactDynamics
    *   a_{n+1} = (u_{n+1} - u_n - dt v_n) / (beta dt^2) - (1/(2 beta) - 1) a_n
    *   v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1}).
    * Both are affine in u_{n+1}: a = c_a u + a_0, v = c_v u + v_0. The
-   * quasi-static scheme has no inertia and no damping.
+   * quasi-static scheme has no inertia and no damping. Also holds the
+   * time step and the end time of the `Time integration` subsection.
    */
   class TimeIntegrator
   {
   public:
+    enum class Scheme
+    {
+      newmark,
+      quasi_static
+    };
+
+    enum class Predictor
+    {
+      displacement,
+      velocity,
+      acceleration
+    };
+
     static void
     declare_parameters(ParameterHandler &prm);
     void
@@ -28,7 +44,27 @@ namespace ContactDynamics
     bool
     is_dynamic() const
     {
-      return dynamic;
+      return scheme == Scheme::newmark;
+    }
+
+    /** The nominal time step, to which cut steps grow back. */
+    double
+    time_step() const
+    {
+      return time_step_;
+    }
+
+    double
+    end_time() const
+    {
+      return end_time_;
+    }
+
+    /** A step cut below this stops the run. */
+    double
+    minimum_time_step() const
+    {
+      return minimum_time_step_;
     }
 
     double
@@ -47,14 +83,14 @@ namespace ContactDynamics
     double
     acceleration_factor(const double dt) const
     {
-      return dynamic ? 1. / (beta_ * dt * dt) : 0.;
+      return is_dynamic() ? 1. / (beta_ * dt * dt) : 0.;
     }
 
     /** d v_{n+1} / d u_{n+1}; quasi-static: v = (u_{n+1} - u_n) / dt */
     double
     velocity_factor(const double dt) const
     {
-      return dynamic ? gamma_ / (beta_ * dt) : 1. / dt;
+      return is_dynamic() ? gamma_ / (beta_ * dt) : 1. / dt;
     }
 
     /**
@@ -71,7 +107,7 @@ namespace ContactDynamics
            Number       &v_new,
            Number       &a_new) const
     {
-      if (!dynamic)
+      if (!is_dynamic())
         {
           v_new = (u_new - u_old) / dt;
           a_new = 0. * a_old;
@@ -90,7 +126,7 @@ namespace ContactDynamics
             const Number &v_old,
             const Number &a_old) const
     {
-      if (!dynamic || predictor == Predictor::displacement)
+      if (!is_dynamic() || predictor == Predictor::displacement)
         return u_old;
       if (predictor == Predictor::velocity)
         return u_old + dt * v_old;
@@ -98,16 +134,14 @@ namespace ContactDynamics
     }
 
   private:
-    enum class Predictor
-    {
-      displacement,
-      velocity,
-      acceleration
-    };
-    Predictor predictor = Predictor::velocity;
-    bool      dynamic   = true;
-    double    beta_     = 0.25;
-    double    gamma_    = 0.5;
+    // the defaults of the parameter file
+    Scheme    scheme             = Scheme::newmark;
+    Predictor predictor          = Predictor::velocity;
+    double    beta_              = 0.25;
+    double    gamma_             = 0.5;
+    double    time_step_         = 0.025;
+    double    end_time_          = 1.;
+    double    minimum_time_step_ = 1e-6;
   };
 } // namespace ContactDynamics
 

@@ -1,19 +1,17 @@
-// Newton's method with a direct (Amesos) linear solver.
+// Newton's method; the linear solves are left to a LinearSolver.
 #ifndef contact_dynamics_solvers_nonlinear_solver_h
 #define contact_dynamics_solvers_nonlinear_solver_h
 
-#include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/timer.h>
+#include <deal.II/base/config.h>
 
-#include <deal.II/lac/trilinos_precondition.h>
-#include <deal.II/lac/trilinos_solver.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
+#include <contact_dynamics/solvers/linear_solver.h>
 
-#include <functional>
-#include <memory>
-#include <ostream>
+#include <iosfwd>
 #include <string>
+
+DEAL_II_NAMESPACE_OPEN
+class TimerOutput;
+DEAL_II_NAMESPACE_CLOSE
 
 namespace ContactDynamics
 {
@@ -73,6 +71,7 @@ namespace ContactDynamics
       std::string  failure;
     };
 
+    /** Also declares the entries of the LinearSolver. */
     static void
     declare_parameters(ParameterHandler &prm);
     void
@@ -105,31 +104,38 @@ namespace ContactDynamics
       this->timer = &timer;
     }
 
-    /**
-     * Forget the factorization. Must be called before the Jacobian is
-     * reinitialized with a new sparsity pattern: the direct solver keeps a
-     * pointer to the matrix, and MUMPS touches it when it is destroyed.
-     */
+    /** See LinearSolver::release(). */
     void
-    release_factorization();
+    release_factorization()
+    {
+      linear_solver.release();
+    }
 
   private:
-    double       absolute_tolerance    = 1e-10;
-    double       relative_tolerance    = 1e-10;
-    double       step_tolerance        = 1e-12;
-    bool         cycle_damping         = true;
-    unsigned int max_iterations        = 20;
-    std::string  linear_solver         = "KLU";
-    double       linear_tolerance      = 1e-6;
-    unsigned int max_linear_iterations = 1000;
-    bool         verbose_              = false;
-    TimerOutput *timer                 = nullptr;
+    /** Assembles; on an exception, records it in `result` (false). */
+    bool
+    assemble(NonlinearSystem                &system,
+             TrilinosWrappers::MPI::Vector  &residual,
+             TrilinosWrappers::SparseMatrix &jacobian,
+             Result                         &result);
 
-    std::unique_ptr<SolverControl>                  solver_control;
-    std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
-    std::unique_ptr<TrilinosWrappers::PreconditionBlockwiseDirect>
-         preconditioner;
-    bool factorization_valid = false;
+    /** Solves J du = -R (timed); on failure, records it (false). */
+    bool
+    solve_linear_system(const TrilinosWrappers::SparseMatrix &jacobian,
+                        TrilinosWrappers::MPI::Vector        &residual,
+                        TrilinosWrappers::MPI::Vector        &increment,
+                        const double                          residual_norm,
+                        const bool                            keep,
+                        Result                               &result);
+
+    double       absolute_tolerance = 1e-10;
+    double       relative_tolerance = 1e-10;
+    double       step_tolerance     = 1e-12;
+    bool         cycle_damping      = true;
+    unsigned int max_iterations     = 25;
+    bool         verbose_           = false;
+    TimerOutput *timer              = nullptr;
+    LinearSolver linear_solver;
   };
 } // namespace ContactDynamics
 

@@ -1,0 +1,111 @@
+// The linear solve of a Newton iteration: a sparse direct solver (Trilinos
+// Amesos KLU or MUMPS) or GMRES with a block-wise direct preconditioner,
+// chosen once when the parameters are read, with the reuse of a
+// factorization across solves behind one interface.
+#ifndef contact_dynamics_solvers_linear_solver_h
+#define contact_dynamics_solvers_linear_solver_h
+
+#include <deal.II/base/config.h>
+
+#include <memory>
+
+DEAL_II_NAMESPACE_OPEN
+class ParameterHandler;
+class SolverControl;
+namespace TrilinosWrappers
+{
+  class SparseMatrix;
+  class SolverDirect;
+  class PreconditionBlockwiseDirect;
+  namespace MPI
+  {
+    class Vector;
+  }
+} // namespace TrilinosWrappers
+DEAL_II_NAMESPACE_CLOSE
+
+namespace ContactDynamics
+{
+  using namespace dealii;
+
+  class LinearSolver
+  {
+  public:
+    enum class Type
+    {
+      klu,
+      mumps,
+      gmres
+    };
+
+    LinearSolver();
+    ~LinearSolver();
+
+    /** Entries of the `Nonlinear solver` subsection that concern it. */
+    static void
+    declare_parameters(ParameterHandler &prm);
+    /** `verbose`: GMRES prints its iterations. */
+    void
+    parse_parameters(ParameterHandler &prm, const bool verbose);
+
+    /** The next solve needs a matrix: there is no valid factorization. */
+    bool
+    needs_matrix() const
+    {
+      return !factorization_valid;
+    }
+
+    /** The matrix changed: factorize it anew at the next solve. */
+    void
+    invalidate()
+    {
+      factorization_valid = false;
+    }
+
+    /**
+     * Solves matrix * solution = -rhs, negating `rhs` in place, and
+     * returns the number of GMRES iterations (0 for a direct solve).
+     * Factorizes `matrix` first when needs_matrix(); `keep` lets the
+     * following solves reuse that factorization (the matrix is constant).
+     * GMRES stops at tolerance times `rhs_norm`, the l2 norm of `rhs`.
+     * Throws if the solver fails.
+     */
+    unsigned int
+    solve(const TrilinosWrappers::SparseMatrix &matrix,
+          TrilinosWrappers::MPI::Vector        &rhs,
+          TrilinosWrappers::MPI::Vector        &solution,
+          const double                          rhs_norm,
+          const bool                            keep);
+
+    /**
+     * Forgets the factorization. Must be called before the matrix is
+     * reinitialized with a new sparsity pattern: the direct solver keeps a
+     * pointer to the matrix, and MUMPS touches it when it is destroyed.
+     */
+    void
+    release();
+
+  private:
+    void
+    factorize(const TrilinosWrappers::SparseMatrix &matrix);
+
+    unsigned int
+    solve_gmres(const TrilinosWrappers::SparseMatrix &matrix,
+                const TrilinosWrappers::MPI::Vector  &rhs,
+                TrilinosWrappers::MPI::Vector        &solution,
+                const double                          rhs_norm) const;
+
+    Type         type           = Type::klu;
+    double       tolerance      = 1e-6;
+    unsigned int max_iterations = 1000;
+    bool         verbose        = false;
+
+    std::unique_ptr<SolverControl>                  solver_control;
+    std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
+    std::unique_ptr<TrilinosWrappers::PreconditionBlockwiseDirect>
+         preconditioner;
+    bool factorization_valid = false;
+  };
+} // namespace ContactDynamics
+
+#endif
