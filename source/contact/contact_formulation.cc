@@ -4,17 +4,29 @@
 #include <contact_dynamics/contact/contact_formulation.h>
 #include <contact_dynamics/contact/mortar_contact.h>
 #include <contact_dynamics/contact/node_to_segment_contact.h>
+#include <contact_dynamics/parameters.h>
 
 #include <sstream>
 
 namespace ContactDynamics
 {
+  namespace
+  {
+    const Selection<ContactParameters::Formulation> formulation_names{
+      {ContactParameters::Formulation::none, "none"},
+      {ContactParameters::Formulation::mortar, "mortar"},
+      {ContactParameters::Formulation::node_to_segment, "nts"}};
+
+    const Selection<bool> penetration_names{{false, "stop"}, {true, "allow"}};
+  } // namespace
+
   void
   ContactParameters::declare_parameters(ParameterHandler &prm)
   {
+    const ContactParameters defaults;
     prm.declare_entry("Formulation",
-                      "none",
-                      Patterns::Selection("none|mortar|nts"),
+                      formulation_names.name(defaults.formulation),
+                      formulation_names.pattern(),
                       "'none': the bodies do not interact (no multiplier "
                       "unknowns, no cost). 'mortar': dual mortar "
                       "segment-to-segment contact with Lagrange multipliers "
@@ -38,8 +50,8 @@ namespace ContactDynamics
                       "for all. 0 = frictionless (no tangential unknowns).");
     prm.declare_entry(
       "Initial penetration",
-      "stop",
-      Patterns::Selection("stop|allow"),
+      penetration_names.name(defaults.allow_initial_penetration),
+      penetration_names.pattern(),
       "Bodies that overlap at t = 0 (by more than the capture tolerance): "
       "'stop' ends the run with a message that says where; 'allow' warns "
       "and lets the contact push them apart in the first steps, which "
@@ -57,7 +69,7 @@ namespace ContactDynamics
   ContactParameters::parse_parameters(ParameterHandler  &prm,
                                       const SceneLayout &layout)
   {
-    formulation = prm.get("Formulation");
+    formulation = formulation_names.value(prm.get("Formulation"));
     pairs.clear();
     const auto side = [&](const std::string &text, const std::string &entry) {
       std::vector<types::boundary_id> ids;
@@ -122,11 +134,13 @@ namespace ContactDynamics
                                "' is not a number in [0, 10]."));
         pairs[p].friction_coefficient = value;
       }
-    AssertThrow(formulation == "none" || !pairs.empty(),
-                ExcMessage("Contact/Formulation = " + formulation +
+    AssertThrow(formulation == Formulation::none || !pairs.empty(),
+                ExcMessage("Contact/Formulation = " +
+                           formulation_names.name(formulation) +
                            " needs at least one pair in 'Contact/Pairs'."));
 
-    allow_initial_penetration = prm.get("Initial penetration") == "allow";
+    allow_initial_penetration =
+      penetration_names.value(prm.get("Initial penetration"));
     monitored_points.clear();
     for (const auto &text :
          Utilities::split_string_list(prm.get("Monitored points"), ';'))
@@ -180,10 +194,15 @@ namespace ContactDynamics
     prm.leave_subsection();
     prm.leave_subsection();
 
-    if (contact.formulation == "mortar")
-      return std::make_unique<MortarContact<dim>>(contact, mortar);
-    if (contact.formulation == "nts")
-      return std::make_unique<NodeToSegmentContact<dim>>(contact, nts);
+    switch (contact.formulation)
+      {
+        case ContactParameters::Formulation::mortar:
+          return std::make_unique<MortarContact<dim>>(contact, mortar);
+        case ContactParameters::Formulation::node_to_segment:
+          return std::make_unique<NodeToSegmentContact<dim>>(contact, nts);
+        case ContactParameters::Formulation::none:
+          break;
+      }
     return nullptr;
   }
 

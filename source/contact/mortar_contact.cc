@@ -4,6 +4,7 @@
 #include <contact_dynamics/contact/contact_ad.h>
 #include <contact_dynamics/contact/mortar_contact.h>
 #include <contact_dynamics/contact/mortar_geometry.h>
+#include <contact_dynamics/parameters.h>
 
 #include <algorithm>
 #include <set>
@@ -18,9 +19,11 @@ namespace ContactDynamics
   void
   MortarParameters::declare_parameters(ParameterHandler &prm)
   {
-    ComplementarityParameters::declare_parameters(prm, "persistency");
+    const MortarParameters defaults;
+    ComplementarityParameters::declare_parameters(prm,
+                                                  defaults.complementarity);
     prm.declare_entry("Segment quadrature points",
-                      "2",
+                      default_text(defaults.quadrature_points),
                       Patterns::Integer(1, 10),
                       "Gauss points per mortar segment, in [1, 10]; 2 "
                       "integrates the products of linear functions exactly.");

@@ -2,6 +2,7 @@
 
 #include <contact_dynamics/contact/contact_ad.h>
 #include <contact_dynamics/contact/node_to_segment_contact.h>
+#include <contact_dynamics/parameters.h>
 
 #include <set>
 
@@ -15,10 +16,12 @@ namespace ContactDynamics
   void
   NodeToSegmentParameters::declare_parameters(ParameterHandler &prm)
   {
-    ComplementarityParameters::declare_parameters(prm, "none");
+    const NodeToSegmentParameters defaults;
+    ComplementarityParameters::declare_parameters(prm,
+                                                  defaults.complementarity);
     prm.declare_entry(
       "Normal smoothing distance",
-      "0",
+      default_text(defaults.smoothing_distance),
       Patterns::Double(0, 0.5),
       "Fraction of a primary face, at each of its ends, over which the normal "
       "blends linearly into the average with the neighbouring face's normal "

@@ -6,6 +6,7 @@
 #include <contact_dynamics/contact/contact_search.h>
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/parallel.h>
+#include <contact_dynamics/parameters.h>
 
 #include <algorithm>
 #include <set>
@@ -13,28 +14,37 @@
 
 namespace ContactDynamics
 {
+  namespace
+  {
+    // the two-valued selections parse into bools
+    const Selection<bool> stabilization_names{{false, "none"},
+                                              {true, "persistency"}};
+    const Selection<bool> jacobian_names{{true, "exact"},
+                                         {false, "approximate"}};
+  } // namespace
+
   void
   ComplementarityParameters::declare_parameters(
-    ParameterHandler  &prm,
-    const std::string &default_stabilization)
+    ParameterHandler                &prm,
+    const ComplementarityParameters &defaults)
   {
     prm.declare_entry("c_n",
-                      "1e6",
+                      default_text(defaults.c_n),
                       Patterns::Double(1e-300),
                       "Complementarity constant c_n > 0 in C_j = lambda_j - "
                       "max(0, lambda_j - c_n g_j). It changes the Newton "
                       "path, not the solution; pick it within a few orders "
                       "of magnitude of E / h (stress / length).");
     prm.declare_entry("Normalize c_n",
-                      "true",
+                      default_text(defaults.normalize_c_n),
                       Patterns::Bool(),
                       "Mortar: divide the weighted gap by the nodal weight "
                       "integral(N_j) over the covered segments, so that c_n "
                       "does not depend on the mesh size (units stress / "
                       "length). The node-to-segment gap is a length already.");
     prm.declare_entry("Stabilization",
-                      default_stabilization,
-                      Patterns::Selection("none|persistency"),
+                      stabilization_names.name(defaults.persistency),
+                      stabilization_names.pattern(),
                       "'persistency': a node in contact at the end of the "
                       "previous step (gap <= Capture tolerance) enforces the "
                       "gap velocity (Newmark-discretized) instead of the gap, "
@@ -42,14 +52,14 @@ namespace ContactDynamics
                       "no energy ('stabilized' mortar of the paper). 'none': "
                       "the gap is enforced at every step ('static').");
     prm.declare_entry("Capture tolerance",
-                      "1e-5",
+                      default_text(defaults.capture_tolerance),
                       Patterns::Double(0),
                       "A node whose (normalized) gap, in length units, is at "
                       "most this value at the end of a step counts as in "
                       "contact for the persistency condition of the next "
                       "step (>= 0).");
     prm.declare_entry("c_t",
-                      "1e4",
+                      default_text(defaults.c_t),
                       Patterns::Double(1e-300),
                       "Friction complementarity constant c_t > 0 (paper "
                       "equation 8): decides stick or slip from lambda_t + c_t "
@@ -58,8 +68,8 @@ namespace ContactDynamics
                       "solution. Units stress x time / length; c_n dt is a "
                       "good start.");
     prm.declare_entry("Jacobian",
-                      "exact",
-                      Patterns::Selection("exact|approximate"),
+                      jacobian_names.name(defaults.exact_jacobian),
+                      jacobian_names.pattern(),
                       "'exact': automatic differentiation through normals, "
                       "projections and segment end points. 'approximate': "
                       "those geometric derivatives are dropped, as in the "
@@ -71,9 +81,9 @@ namespace ContactDynamics
   {
     c_n               = prm.get_double("c_n");
     normalize_c_n     = prm.get_bool("Normalize c_n");
-    persistency       = prm.get("Stabilization") == "persistency";
+    persistency       = stabilization_names.value(prm.get("Stabilization"));
     capture_tolerance = prm.get_double("Capture tolerance");
-    exact_jacobian    = prm.get("Jacobian") == "exact";
+    exact_jacobian    = jacobian_names.value(prm.get("Jacobian"));
     c_t               = prm.get_double("c_t");
   }
 

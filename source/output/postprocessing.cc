@@ -4,8 +4,9 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
-#include <contact_dynamics/parallel.h>
 #include <contact_dynamics/output/postprocessing.h>
+#include <contact_dynamics/parallel.h>
+#include <contact_dynamics/parameters.h>
 
 #include <cmath>
 #include <iomanip>
@@ -15,14 +16,15 @@ namespace ContactDynamics
   void
   OutputParameters::declare_parameters(ParameterHandler &prm)
   {
+    const OutputParameters defaults;
     prm.declare_entry("Output directory",
-                      "output",
+                      defaults.directory,
                       Patterns::DirectoryName(),
                       "Where statistics.csv, parameters.prm, solution.pvd and "
                       "the VTU files go (created if missing; relative to the "
                       "working directory).");
     prm.declare_entry("VTU interval",
-                      "1",
+                      default_text(defaults.vtu_interval),
                       Patterns::Integer(0),
                       "Write the solution every this many time steps (and "
                       "at the first and last); 0 writes none.");

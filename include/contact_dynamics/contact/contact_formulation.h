@@ -36,7 +36,13 @@ namespace ContactDynamics
 
   struct ContactParameters
   {
-    std::string              formulation = "none";
+    enum class Formulation
+    {
+      none,
+      mortar,
+      node_to_segment
+    };
+    Formulation              formulation = Formulation::none;
     std::vector<ContactPair> pairs;
     std::vector<Point<2>>    monitored_points;
     bool                     allow_initial_penetration = false;

@@ -14,7 +14,7 @@ namespace ContactDynamics
 {
   struct NodeToSegmentParameters
   {
-    ComplementarityParameters complementarity;
+    ComplementarityParameters complementarity{false}; // no persistency
     double                    smoothing_distance = 0;
 
     static void

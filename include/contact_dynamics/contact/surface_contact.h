@@ -23,17 +23,22 @@ namespace ContactDynamics
   /** Parameters of the complementarity condition, per formulation. */
   struct ComplementarityParameters
   {
-    double c_n               = 1e6;
-    bool   normalize_c_n     = true;
-    bool   persistency       = true;
+    double c_n           = 1e6;
+    bool   normalize_c_n = true;
+    bool   persistency;
     double capture_tolerance = 1e-5;
     bool   exact_jacobian    = true;
     double c_t               = 1e4;
 
-    /** Declares the entries with the given default stabilization. */
+    /** The formulations differ in the default of persistency only. */
+    explicit ComplementarityParameters(const bool persistency = true)
+      : persistency(persistency)
+    {}
+
+    /** Declares the entries with the values of `defaults` as defaults. */
     static void
-    declare_parameters(ParameterHandler  &prm,
-                       const std::string &default_stabilization);
+    declare_parameters(ParameterHandler                &prm,
+                       const ComplementarityParameters &defaults);
     void
     parse_parameters(ParameterHandler &prm);
   };
