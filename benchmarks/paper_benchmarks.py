@@ -298,7 +298,7 @@ def spectrum_dt(runs, args):
 def default_element_length(runs):
     """Primary (substrate top) element length of the built-in ironing scene.
 
-    source/scene.cc builds the substrate with scaled(200, f) = max(1, round(200 f))
+    source/scenes/ironing.cc builds the substrate with scaled(200, f) = max(1, round(200 f))
     uniform elements along its top x in [0, 12] (f: Scene/Refinement factor)."""
     prm = next((r.prm for r in runs if r.prm), {})
     if prm.get("Scene/Mesh file"):
