@@ -1,8 +1,7 @@
 // The "two blocks" scene (added in one file and one registry line, issue 13):
-// its bodies and surfaces in 2-D and 3-D against the exact volumes and
-// areas, and in 2-D a block resting on another under its own weight with
-// mortar contact: the support of the lower block carries exactly the weight
-// of the upper one (rho g V = 0.25 * 1000), which only contact transmits.
+// its bodies and surfaces in 2-D and 3-D against the exact volumes, areas
+// and gap, and in 2-D the narrow upper block pushed down onto the wide lower
+// one with mortar contact (the bounds of the load are derived below).
 #include <deal.II/grid/tria.h>
 
 #include <contact_dynamics/scenes/scene.h>

@@ -15,13 +15,14 @@ namespace ContactDynamics
       declare_parameters(ParameterHandler &prm)
       {
         prm.enter_subsection("Two blocks");
-        prm.declare_entry("Gap",
-                          "0",
-                          Patterns::Double(0),
-                          "Initial distance between the upper block "
-                          "[0.25, 0.75] x [0.5 + gap, 1 + gap] (x [0.25, "
-                          "0.75] in 3-D) and the lower block [0, 1] x [0, "
-                          "0.5] (x [0, 1]).");
+        prm.declare_entry(
+          "Gap",
+          "0",
+          Patterns::Double(0, 10),
+          "Initial distance, in [0, 10], between the upper block "
+          "[0.25, 0.75] x [0.5 + gap, 1 + gap] (x [0.25, "
+          "0.75] in 3-D) and the lower block [0, 1] x [0, "
+          "0.5] (x [0, 1]).");
         prm.leave_subsection();
       }
 

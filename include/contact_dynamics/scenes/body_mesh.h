@@ -199,7 +199,7 @@ namespace ContactDynamics
       return MeshSteps::scaled(count, refinement_factor);
     }
 
-    double refinement_factor = 1;
+    double refinement_factor; // Scene/Refinement factor
   };
 } // namespace ContactDynamics
 
