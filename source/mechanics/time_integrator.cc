@@ -77,8 +77,8 @@ namespace ContactDynamics
     minimum_time_step_ = prm.get_double("Minimum time step");
     AssertThrow(!is_dynamic() || 2 * beta_ >= gamma_ - 1e-12,
                 ExcMessage(
-                  "Time integration/Newmark beta = " + std::to_string(beta_) +
-                  " with Newmark gamma = " + std::to_string(gamma_) +
+                  "Time integration/Newmark beta = " + format_number(beta_) +
+                  " with Newmark gamma = " + format_number(gamma_) +
                   " is only conditionally stable; this implicit code "
                   "requires 2 beta >= gamma >= 1/2."));
     AssertThrow(minimum_time_step_ <= time_step_,

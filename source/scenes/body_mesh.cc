@@ -90,12 +90,20 @@ namespace ContactDynamics
     }
   } // namespace MeshSteps
 
+  namespace
+  {
+    // the lower and upper side of a box along each axis
+    const char *const box_sides[3][2] = {{"left", "right"},
+                                         {"bottom", "top"},
+                                         {"front", "back"}};
+  } // namespace
+
   std::vector<std::string>
   box_surface_names(const std::string &prefix, const unsigned int dim)
   {
     std::vector<std::string> names;
-    for (const char *side : {"left", "right", "bottom", "top", "front", "back"})
-      if (names.size() < 2 * dim)
+    for (unsigned int d = 0; d < dim; ++d)
+      for (const char *side : box_sides[d])
         names.push_back(prefix + side);
     return names;
   }
@@ -110,14 +118,12 @@ namespace ContactDynamics
   {
     const double tol = 1e-8 * p0.distance(p1);
     return [p0, p1, prefix, tol](const Point<dim> &c) -> std::string {
-      static const char *lower[3] = {"left", "bottom", "front"};
-      static const char *upper[3] = {"right", "top", "back"};
       for (unsigned int d = 0; d < dim; ++d)
         {
           if (std::abs(c[d] - p0[d]) < tol)
-            return prefix + lower[d];
+            return prefix + box_sides[d][0];
           if (std::abs(c[d] - p1[d]) < tol)
-            return prefix + upper[d];
+            return prefix + box_sides[d][1];
         }
       return "";
     };

@@ -112,10 +112,12 @@ namespace ContactDynamics
     const SceneEntry *entry = find_scene(scene_name);
     Assert(entry != nullptr, ExcInternalError());
     AssertThrow(entry->exists_in(dim),
-                ExcMessage("The parameter Scene/Scene = '" + scene_name +
-                           "': scene '" + scene_name + "' is 2-D only; in " +
-                           std::to_string(dim) + "-D use " +
-                           scene_names(dim, "' or '").insert(0, "'") + "'."));
+                ExcMessage(
+                  "The parameter Scene/Scene = '" + scene_name + "': scene '" +
+                  scene_name +
+                  "' is 2-D only, but Dimension = " + std::to_string(dim) +
+                  "; in " + std::to_string(dim) + "-D use " +
+                  scene_names(dim, "' or '").insert(0, "'") + "'."));
     scene = entry->create<dim>();
     scene->parse_parameters(prm);
     prm.leave_subsection();

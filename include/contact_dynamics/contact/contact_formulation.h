@@ -13,7 +13,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <contact_dynamics/scenes/scene.h>
+#include <contact_dynamics/scenes/scene_layout.h>
 
 #include <memory>
 #include <string>

@@ -6,7 +6,7 @@
 
 #include <deal.II/fe/component_mask.h>
 
-#include <contact_dynamics/scenes/scene.h>
+#include <contact_dynamics/scenes/scene_layout.h>
 
 #include <map>
 #include <memory>

@@ -9,7 +9,8 @@
 
 #include <deal.II/grid/tria.h>
 
-#include <map>
+#include <contact_dynamics/scenes/scene_layout.h>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,25 +18,6 @@
 namespace ContactDynamics
 {
   using namespace dealii;
-
-  /**
-   * Names of the bodies and surfaces of a scene. Body i has material id i.
-   * Every boundary face of the triangulation carries the boundary id of one
-   * named surface.
-   */
-  struct SceneLayout
-  {
-    std::vector<std::string>                  body_names;
-    std::map<std::string, types::boundary_id> surfaces;
-
-    /** Material id of a body; throws a message listing the known bodies. */
-    types::material_id
-    body_id(const std::string &name) const;
-
-    /** Boundary id of a surface; throws a message listing the known ones. */
-    types::boundary_id
-    surface_id(const std::string &name) const;
-  };
 
   /**
    * What every scene provides. The bodies of a scene never share vertices,
