@@ -1,4 +1,5 @@
 // Bar impact: an elastic bar hitting a wall or a second bar.
+#include <contact_dynamics/parameters.h>
 #include <contact_dynamics/scenes/body_mesh.h>
 #include <contact_dynamics/scenes/scene_registry.h>
 
@@ -6,6 +7,9 @@ namespace ContactDynamics
 {
   namespace
   {
+    // Target: a bar or (the default) a wall
+    const Selection<bool> target_names{{false, "wall"}, {true, "bar"}};
+
     class BarImpact : public BuiltInScene<2>
     {
     public:
@@ -29,8 +33,8 @@ namespace ContactDynamics
           "Initial distance between the striker and the target (at x = 0).");
         prm.declare_entry(
           "Target",
-          "wall",
-          Patterns::Selection("wall|bar"),
+          target_names.name(false),
+          target_names.pattern(),
           "'wall': a short block [0, 0.2 L] x [0, height] (make it stiff and "
           "fix its right side); 'bar': a second bar [0, Target length] x "
           "[0, height].");
@@ -55,7 +59,7 @@ namespace ContactDynamics
         length            = prm.get_double("Bar length");
         height            = prm.get_double("Bar height");
         gap               = prm.get_double("Gap");
-        target_bar        = (prm.get("Target") == "bar");
+        target_bar        = target_names.value(prm.get("Target"));
         target_bar_length = prm.get_double("Target length");
         elements          = prm.get_integer("Elements along bar");
         prm.leave_subsection();
