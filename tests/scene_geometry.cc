@@ -24,25 +24,6 @@ using namespace dealii;
 using namespace ContactDynamics;
 
 template <int dim>
-Scene<dim>
-make_scene(const std::string                             &name,
-           const double                                   factor = 1,
-           const std::function<void(ParameterHandler &)> &extra  = {})
-{
-  ParameterHandler prm;
-  Scene<dim>::declare_parameters(prm);
-  prm.enter_subsection("Scene");
-  prm.set("Scene", name);
-  prm.set("Refinement factor", factor);
-  if (extra)
-    extra(prm);
-  prm.leave_subsection();
-  Scene<dim> scene;
-  scene.parse_parameters(prm);
-  return scene;
-}
-
-template <int dim>
 double
 body_measure(const Triangulation<dim> &tria, const unsigned int body)
 {

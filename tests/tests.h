@@ -57,6 +57,7 @@ check_true(const std::string &name, const bool condition)
 
 #include <contact_dynamics/application.h>
 #include <contact_dynamics/contact/contact_formulation.h>
+#include <contact_dynamics/scenes/scene.h>
 
 #include <functional>
 #include <map>
@@ -117,6 +118,27 @@ contact_statistics(const ContactDynamics::ContactFormulation<dim> &contact)
   for (unsigned int i = 0; i < names.size(); ++i)
     row[names[i]] = values[i];
   return row;
+}
+
+// A scene selected by name with its refinement factor; `extra` sets more
+// entries inside subsection Scene.
+template <int dim>
+ContactDynamics::Scene<dim>
+make_scene(const std::string                                     &name,
+           const double                                           factor = 1,
+           const std::function<void(dealii::ParameterHandler &)> &extra  = {})
+{
+  dealii::ParameterHandler prm;
+  ContactDynamics::Scene<dim>::declare_parameters(prm);
+  prm.enter_subsection("Scene");
+  prm.set("Scene", name);
+  prm.set("Refinement factor", factor);
+  if (extra)
+    extra(prm);
+  prm.leave_subsection();
+  ContactDynamics::Scene<dim> scene;
+  scene.parse_parameters(prm);
+  return scene;
 }
 
 // Writes `text` to `filename` and reads it as the application would.

@@ -18,16 +18,12 @@ namespace
   void
   check_geometry()
   {
-    ParameterHandler prm;
-    Scene<dim>::declare_parameters(prm);
-    prm.enter_subsection("Scene");
-    prm.set("Scene", "two blocks");
-    prm.enter_subsection("Two blocks");
-    prm.set("Gap", "0.1");
-    prm.leave_subsection();
-    prm.leave_subsection();
-    Scene<dim> scene;
-    scene.parse_parameters(prm);
+    const Scene<dim> scene =
+      make_scene<dim>("two blocks", 1, [](ParameterHandler &prm) {
+        prm.enter_subsection("Two blocks");
+        prm.set("Gap", "0.1");
+        prm.leave_subsection();
+      });
     const SceneLayout  layout = scene.layout();
     Triangulation<dim> tria;
     scene.create_triangulation(tria);

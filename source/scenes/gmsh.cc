@@ -28,23 +28,24 @@ namespace ContactDynamics
       {
         mesh_file = prm.get("Mesh file");
         // a missing or unnamed mesh file is reported now, not at mesh time
-        GmshReader::read_layout(mesh_file, dim);
+        file_layout = GmshReader::read_layout(mesh_file, dim);
       }
 
       SceneLayout
       layout() const override
       {
-        return GmshReader::read_layout(mesh_file, dim);
+        return file_layout;
       }
 
       void
       create_triangulation(Triangulation<dim> &triangulation) const override
       {
-        GmshReader::read_mesh(mesh_file, layout(), triangulation);
+        GmshReader::read_mesh(mesh_file, file_layout, triangulation);
       }
 
     private:
       std::string mesh_file;
+      SceneLayout file_layout;
     };
   } // namespace
 
