@@ -152,8 +152,10 @@ namespace ContactDynamics
       {
         contact->setup(dof_handler);
         locally_relevant.add_indices(contact->surface_dofs());
-        contact_writer = std::make_unique<ContactWriter<dim>>(
-          *contact, mpi_communicator, output_parameters.directory);
+        contact_writer =
+          std::make_unique<ContactWriter<dim>>(*contact,
+                                               mpi_communicator,
+                                               output_parameters.directory);
       }
 
     // Dirichlet degrees of freedom: Newton increments vanish there; so do
@@ -356,7 +358,8 @@ namespace ContactDynamics
                                      v_ghost,
                                      0.,
                                      integrator.time_step(),
-                                     integrator.is_dynamic()},
+                                     integrator.is_dynamic(),
+                                     integrator},
                           increment_constraints,
                           false,
                           contact_residual,
@@ -494,7 +497,8 @@ namespace ContactDynamics
                                      v_ghost,
                                      integrator.velocity_factor(dt_current),
                                      dt_current,
-                                     integrator.is_dynamic()},
+                                     integrator.is_dynamic(),
+                                     integrator},
                           increment_constraints,
                           with_jacobian,
                           residual_out,

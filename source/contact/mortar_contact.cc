@@ -297,8 +297,9 @@ namespace ContactDynamics
     m.t1          = SegmentGeometry::rotate(m.n1);
 
     const QGauss<1> gauss(quadrature_points);
-    const bool      rates = this->complementarity.persistency && state.dynamic;
-    SegmentSums     sums;
+    // (the first rate of a held node, the velocity-level condition)
+    const bool  rates = this->complementarity.holds_contact() && state.dynamic;
+    SegmentSums sums;
     for (unsigned int i = 0; i < 2; ++i)
       sums.gap[i] = sums.weight[i] = sums.gap_rate[i] = sums.slip_rate[i] =
         AD(0.);

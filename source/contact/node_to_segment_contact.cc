@@ -276,7 +276,7 @@ namespace ContactDynamics
     const Vec<AD> n_secondary = -normal;
     const Vec<AD> tangent     = SegmentGeometry::rotate(n_secondary);
     const bool    friction    = pair.friction_coefficient > 0;
-    if ((this->complementarity.persistency && state.dynamic) || friction)
+    if ((this->complementarity.holds_contact() && state.dynamic) || friction)
       {
         const Vec<AD> v_rel = v - (N[0] * vp.at(c) + N[1] * vp.at(d));
         ContactAD::add_to(pair.gap_rate[j],

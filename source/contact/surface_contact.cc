@@ -17,8 +17,12 @@ namespace ContactDynamics
   namespace
   {
     // the two-valued selections parse into bools
-    const Selection<bool> stabilization_names{{false, "none"},
-                                              {true, "persistency"}};
+    using Stabilization = ComplementarityParameters::Stabilization;
+    const Selection<Stabilization> stabilization_names{
+      {Stabilization::persistency, "persistency"},
+      {Stabilization::velocity_persistency, "velocity persistency"},
+      {Stabilization::velocity_update, "velocity update"},
+      {Stabilization::none, "none"}};
     const Selection<bool> jacobian_names{{true, "exact"},
                                          {false, "approximate"}};
   } // namespace
@@ -42,15 +46,23 @@ namespace ContactDynamics
                       "integral(N_j) over the covered segments, so that c_n "
                       "does not depend on the mesh size (units stress / "
                       "length). The node-to-segment gap is a length already.");
-    prm.declare_entry("Stabilization",
-                      stabilization_names.name(defaults.persistency),
-                      stabilization_names.pattern(),
-                      "'persistency': a node in contact at the end of the "
-                      "previous step (gap <= Capture tolerance) enforces the "
-                      "gap velocity (Newmark-discretized) instead of the gap, "
-                      "so the penetration does not change and contact creates "
-                      "no energy ('stabilized' mortar of the paper). 'none': "
-                      "the gap is enforced at every step ('static').");
+    prm.declare_entry(
+      "Stabilization",
+      stabilization_names.name(defaults.stabilization),
+      stabilization_names.pattern(),
+      "What keeps contact from creating energy. 'persistency': a node in "
+      "contact at the end of the previous step (gap <= Capture tolerance) "
+      "enforces a zero Newmark rate of its normalized weighted gap, "
+      "gdot_{n+1} = gamma/(beta dt) (g_{n+1} - g_n) + (terms of step n), "
+      "with g the gap of the whole discretization (moving segments, "
+      "rotating normals, changing Jacobians), so a held penetration stays "
+      "constant to solver tolerance and contact does no work. 'velocity "
+      "persistency': the paper's velocity-level condition -int psi (v_s - "
+      "v_p).n = 0, exact on flat surfaces only (drift on curved sliding "
+      "ones). 'velocity update': the gap is enforced at every step, then "
+      "the velocities of the bodies in contact are corrected so that "
+      "frictionless contact does no work (Laursen and Love 2002). 'none': "
+      "the gap is enforced at every step ('static').");
     prm.declare_entry("Capture tolerance",
                       default_text(defaults.capture_tolerance),
                       Patterns::Double(0),
@@ -81,7 +93,7 @@ namespace ContactDynamics
   {
     c_n               = prm.get_double("c_n");
     normalize_c_n     = prm.get_bool("Normalize c_n");
-    persistency       = stabilization_names.value(prm.get("Stabilization"));
+    stabilization     = stabilization_names.value(prm.get("Stabilization"));
     capture_tolerance = prm.get_double("Capture tolerance");
     exact_jacobian    = jacobian_names.value(prm.get("Jacobian"));
     c_t               = prm.get_double("c_t");
@@ -322,6 +334,41 @@ namespace ContactDynamics
   }
 
   template <int dim>
+  LinearizedValue
+  SurfaceContact<dim>::held_gap_rate(PairData          &pair,
+                                     const unsigned int j,
+                                     const TrialState  &state) const
+  {
+    // the Newmark rate of the normalized gap g/w, from its committed value
+    // and rates, times c_n dt; unnormalized: times w (c_n dt w gdot)
+    NodeState   &node  = pair.nodes[j];
+    const auto  &g     = pair.gap[j];
+    const auto  &w     = pair.weight[j];
+    const double ratio = g.value / w.value;
+    const double c     = complementarity.c_n * state.dt;
+    state.integrator.update(state.dt,
+                            node.held_gap,
+                            node.held_rate,
+                            node.held_acceleration,
+                            ratio,
+                            node.gap_rate,
+                            node.gap_acceleration);
+    const double    scale = complementarity.normalize_c_n ? 1. : w.value;
+    LinearizedValue rate;
+    rate.value = c * scale * node.gap_rate;
+    // d(g/w) = dg / w - g dw / w^2
+    for (const auto &d : g.derivatives)
+      rate.derivatives[d.first] += c * scale * state.c_v * d.second / w.value;
+    for (const auto &d : w.derivatives)
+      rate.derivatives[d.first] -=
+        c * scale * state.c_v * ratio * d.second / w.value;
+    if (!complementarity.normalize_c_n)
+      for (const auto &d : w.derivatives)
+        rate.derivatives[d.first] += c * node.gap_rate * d.second;
+    return rate;
+  }
+
+  template <int dim>
   bool
   SurfaceContact<dim>::assemble_normal(PairData           &pair,
                                        const unsigned int  j,
@@ -343,22 +390,35 @@ namespace ContactDynamics
     // weighted penetration
     node.projected = node.weight > minimum_coverage() * scale;
 
-    // the constraint quantity c * g / w and its derivatives
+    // the constraint quantity c * g / w (or its rate) and its derivatives
     bool active = false;
     if (node.projected)
       {
-        const bool             rate = node.persistent && state.dynamic;
-        const LinearizedValue &g    = rate ? pair.gap_rate[j] : pair.gap[j];
-        const double factor    = complementarity.c_n * (rate ? state.dt : 1.);
-        const bool   normalize = complementarity.normalize_c_n;
-        const double w         = normalize ? node.weight : 1.;
-        constraint.value       = factor * g.value / w;
-        for (const auto &d : g.derivatives)
-          constraint.derivatives[d.first] += factor * d.second / w;
-        if (normalize)
-          for (const auto &d : pair.weight[j].derivatives)
-            constraint.derivatives[d.first] -=
-              factor * g.value * d.second / (w * w);
+        const bool normalize = complementarity.normalize_c_n;
+        const bool held      = node.persistent && state.dynamic;
+        const auto rates     = complementarity.stabilization;
+        if (held && rates == Stabilization::persistency)
+          constraint = held_gap_rate(pair, j, state);
+        else
+          {
+            const bool velocity =
+              held && rates == Stabilization::velocity_persistency;
+            const LinearizedValue &g =
+              velocity ? pair.gap_rate[j] : pair.gap[j];
+            const double factor =
+              complementarity.c_n * (velocity ? state.dt : 1.);
+            const double w   = normalize ? node.weight : 1.;
+            constraint.value = factor * g.value / w;
+            for (const auto &d : g.derivatives)
+              constraint.derivatives[d.first] += factor * d.second / w;
+            if (normalize)
+              for (const auto &d : pair.weight[j].derivatives)
+                constraint.derivatives[d.first] -=
+                  factor * g.value * d.second / (w * w);
+            // a node not held starts holding with its velocity-level rate
+            node.gap_rate         = pair.gap_rate[j].value / node.weight;
+            node.gap_acceleration = 0;
+          }
         active = (lambda - constraint.value > 0);
       }
     node.active = active;
@@ -609,8 +669,11 @@ namespace ContactDynamics
         {
           NodeState &node = pair.nodes[j];
           node.persistent =
-            complementarity.persistency && node.projected &&
+            complementarity.holds_contact() && node.projected &&
             node.normalized_gap() <= complementarity.capture_tolerance;
+          node.held_gap          = node.normalized_gap();
+          node.held_rate         = node.projected ? node.gap_rate : 0.;
+          node.held_acceleration = node.projected ? node.gap_acceleration : 0.;
           if (pair.owned_node[j])
             gap_field(pair.secondary.dofs[j][dim]) = node.normalized_gap();
           pair.position[j] = pair.secondary.position(j, u);

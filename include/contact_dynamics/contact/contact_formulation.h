@@ -13,6 +13,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <contact_dynamics/mechanics/time_integrator.h>
 #include <contact_dynamics/scenes/scene_layout.h>
 
 #include <memory>
@@ -56,11 +57,12 @@ namespace ContactDynamics
   /** What the time integrator tells a formulation about the trial state. */
   struct TrialState
   {
-    const VectorType &u;       // displacement (and multipliers) at t_{n+1}
-    const VectorType &v;       // Newmark velocity at t_{n+1}
-    double            c_v;     // d v / d u
-    double            dt;      // time step size
-    bool              dynamic; // false for quasi-static
+    const VectorType     &u;       // displacement (and multipliers) at t_{n+1}
+    const VectorType     &v;       // Newmark velocity at t_{n+1}
+    double                c_v;     // d v / d u
+    double                dt;      // time step size
+    bool                  dynamic; // false for quasi-static
+    const TimeIntegrator &integrator; // for the rates of nodal quantities
   };
 
   /** The state of a secondary node after an assembly. */
@@ -74,7 +76,11 @@ namespace ContactDynamics
     bool   projected  = false;
     bool   active     = false;
     bool   stick      = false; // active and sticking (friction)
-    bool   persistent = false; // velocity-level condition next step
+    bool   persistent = false; // holds its gap (rate) in the next step
+    // the normalized gap's Newmark rate and second rate at this state, and
+    // the normalized gap with its rates at the last committed step
+    double gap_rate = 0, gap_acceleration = 0;
+    double held_gap = 0, held_rate = 0, held_acceleration = 0;
 
     /** The gap in length units. */
     double

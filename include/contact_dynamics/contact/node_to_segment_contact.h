@@ -14,8 +14,9 @@ namespace ContactDynamics
 {
   struct NodeToSegmentParameters
   {
-    ComplementarityParameters complementarity{false}; // no persistency
-    double                    smoothing_distance = 0;
+    ComplementarityParameters complementarity{
+      ComplementarityParameters::Stabilization::none};
+    double smoothing_distance = 0;
 
     static void
     declare_parameters(ParameterHandler &prm);

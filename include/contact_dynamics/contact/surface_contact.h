@@ -23,17 +23,35 @@ namespace ContactDynamics
   /** Parameters of the complementarity condition, per formulation. */
   struct ComplementarityParameters
   {
-    double c_n           = 1e6;
-    bool   normalize_c_n = true;
-    bool   persistency;
-    double capture_tolerance = 1e-5;
-    bool   exact_jacobian    = true;
-    double c_t               = 1e4;
+    /** What keeps a node that is in contact from creating energy. */
+    enum class Stabilization
+    {
+      none,                 // the gap is enforced at every step (static)
+      persistency,          // Newmark rate of the weighted gap held at zero
+      velocity_persistency, // the paper's velocity-level gap rate
+      velocity_update       // static, then a velocity correction
+    };
 
-    /** The formulations differ in the default of persistency only. */
-    explicit ComplementarityParameters(const bool persistency = true)
-      : persistency(persistency)
+    double        c_n           = 1e6;
+    bool          normalize_c_n = true;
+    Stabilization stabilization;
+    double        capture_tolerance = 1e-5;
+    bool          exact_jacobian    = true;
+    double        c_t               = 1e4;
+
+    /** The formulations differ in the default stabilization only. */
+    explicit ComplementarityParameters(
+      const Stabilization stabilization = Stabilization::persistency)
+      : stabilization(stabilization)
     {}
+
+    /** Whether a node in contact holds its gap (rate) in the next step. */
+    bool
+    holds_contact() const
+    {
+      return stabilization == Stabilization::persistency ||
+             stabilization == Stabilization::velocity_persistency;
+    }
 
     /** Declares the entries with the values of `defaults` as defaults. */
     static void
@@ -54,7 +72,8 @@ namespace ContactDynamics
   class SurfaceContact : public ContactFormulation<dim>
   {
   public:
-    using NodeState = ContactNodeState;
+    using NodeState     = ContactNodeState;
+    using Stabilization = ComplementarityParameters::Stabilization;
 
     SurfaceContact(const ContactParameters         &contact,
                    const ComplementarityParameters &complementarity);
@@ -311,6 +330,16 @@ namespace ContactDynamics
                     const TrialState   &state,
                     const LinearSystem &system,
                     LinearizedValue    &constraint);
+
+    /**
+     * c_n dt times the Newmark rate of node j's normalized weighted gap
+     * (the 'persistency' condition of a held node), with derivatives;
+     * stores the rates in the node's state.
+     */
+    LinearizedValue
+    held_gap_rate(PairData          &pair,
+                  const unsigned int node,
+                  const TrialState  &state) const;
 
     /** The friction condition of node j, given its normal condition. */
     void
