@@ -97,21 +97,81 @@ namespace ContactDynamics
 
   namespace
   {
-    // a mortar patch in AD numbers: positions and velocities of the
-    // secondary nodes (the face and its neighbours) and primary nodes, the
-    // face, its nodal normals and tangents and its multipliers
+    // second derivatives: the Hessian of the contact potential
+    using AD2 = Sacado::Fad::DFad<AD>;
+
+    template <typename Number>
+    double
+    scalar(const Number &x)
+    {
+      return Sacado::ScalarValue<Number>::eval(x);
+    }
+
+    template <typename Number>
+    Vec<double>
+    scalar(const Vec<Number> &x)
+    {
+      return Vec<double>({scalar(x[0]), scalar(x[1])});
+    }
+
+    // the value only: drops derivatives (approximate Jacobians)
+    template <typename Number>
+    Vec<Number>
+    frozen(const Vec<Number> &x)
+    {
+      return Vec<Number>({Number(scalar(x[0])), Number(scalar(x[1]))});
+    }
+
+    // a mortar patch: positions and velocities of the secondary nodes (the
+    // face and its neighbours) and primary nodes, the face, its nodal
+    // normals and tangents and its multipliers
+    template <typename Number>
     struct MortarPatch
     {
-      std::map<unsigned int, Vec<AD>> xs, vs, xp, vp;
-      Vec<AD>                         x0, x1, n0, n1, t0, t1, face_n;
-      AD                              half_length;
-      AD                              lambda[2], lambda_t[2];
+      std::map<unsigned int, Vec<Number>> xs, vs, xp, vp;
+      Vec<Number>                         x0, x1, n0, n1, t0, t1, face_n;
+      Number                              half_length;
+      Number                              lambda[2], lambda_t[2];
     };
+
+    // the face geometry from the positions xs (nodal normals: average of
+    // the adjacent unit face normals)
+    template <typename Number, typename Surface>
+    void
+    set_face_geometry(const Surface       &s,
+                      const unsigned int   e,
+                      const bool           exact,
+                      MortarPatch<Number> &m)
+    {
+      const auto face_normal = [&](const unsigned int f) {
+        return SegmentGeometry::face_normal(m.xs.at(s.faces[f][0]),
+                                            m.xs.at(s.faces[f][1]));
+      };
+      const auto nodal_normal = [&](const unsigned int node) {
+        Vec<Number> sum;
+        for (const unsigned int f : s.node_faces[node])
+          sum += face_normal(f);
+        sum /= SegmentGeometry::norm(sum);
+        return exact ? sum : frozen(sum);
+      };
+      const auto &face = s.faces[e];
+      m.x0             = m.xs.at(face[0]);
+      m.x1             = m.xs.at(face[1]);
+      m.n0             = nodal_normal(face[0]);
+      m.n1             = nodal_normal(face[1]);
+      m.face_n         = SegmentGeometry::face_normal(m.x0, m.x1);
+      m.half_length    = SegmentGeometry::norm(Vec<Number>(m.x1 - m.x0)) / 2.;
+      m.t0             = SegmentGeometry::rotate(m.n0);
+      m.t1             = SegmentGeometry::rotate(m.n1);
+    }
 
     // what the mortar segments of a patch add up
     struct SegmentSums
     {
-      std::map<types::global_dof_index, AD>     rows; // residual contributions
+      // residual contributions of the tangential traction (the normal
+      // ones derive from the weighted gaps) and, for approximate
+      // Jacobians, of the normal traction along the nodal normals
+      std::map<types::global_dof_index, AD>     rows, normal_rows;
       std::map<types::global_dof_index, double> tangential_rows;
       AD gap[2], weight[2], gap_rate[2], slip_rate[2];
     };
@@ -119,26 +179,27 @@ namespace ContactDynamics
     // the parameters lo < hi on the secondary face of the segment that the
     // primary face (y0, y1) covers, projected along the normal field;
     // false if it covers none
+    template <typename Number>
     bool
-    segment_bounds(const MortarPatch &m,
-                   const Vec<AD>     &y0,
-                   const Vec<AD>     &y1,
-                   const bool         exact,
-                   AD                &lo,
-                   AD                &hi)
+    segment_bounds(const MortarPatch<Number> &m,
+                   const Vec<Number>         &y0,
+                   const Vec<Number>         &y1,
+                   const bool                 exact,
+                   Number                    &lo,
+                   Number                    &hi)
     {
       double xi_c, xi_d;
-      if (!MortarGeometry::project_along_normal_field(value(m.x0),
-                                                      value(m.x1),
-                                                      value(m.n0),
-                                                      value(m.n1),
-                                                      value(y0),
+      if (!MortarGeometry::project_along_normal_field(scalar(m.x0),
+                                                      scalar(m.x1),
+                                                      scalar(m.n0),
+                                                      scalar(m.n1),
+                                                      scalar(y0),
                                                       xi_c) ||
-          !MortarGeometry::project_along_normal_field(value(m.x0),
-                                                      value(m.x1),
-                                                      value(m.n0),
-                                                      value(m.n1),
-                                                      value(y1),
+          !MortarGeometry::project_along_normal_field(scalar(m.x0),
+                                                      scalar(m.x1),
+                                                      scalar(m.n0),
+                                                      scalar(m.n1),
+                                                      scalar(y1),
                                                       xi_d))
         return false;
       const double lo_v = std::max(-1., std::min(xi_c, xi_d));
@@ -146,10 +207,11 @@ namespace ContactDynamics
       if (hi_v - lo_v < 1e-12)
         return false;
       // an end inside the face moves with the primary node it projects
-      const auto end =
-        [&](const double bound, const Vec<AD> &y, const double xi) -> AD {
+      const auto end = [&](const double       bound,
+                           const Vec<Number> &y,
+                           const double       xi) -> Number {
         if (std::abs(bound - xi) > 0 || !exact)
-          return AD(bound);
+          return Number(bound);
         return MortarGeometry::project_along_normal_field(m.x0,
                                                           m.x1,
                                                           m.n0,
@@ -159,27 +221,110 @@ namespace ContactDynamics
       };
       lo = (lo_v == std::min(xi_c, xi_d)) ?
              end(lo_v, xi_c < xi_d ? y0 : y1, std::min(xi_c, xi_d)) :
-             AD(lo_v);
+             Number(lo_v);
       hi = (hi_v == std::max(xi_c, xi_d)) ?
              end(hi_v, xi_c < xi_d ? y1 : y0, std::max(xi_c, xi_d)) :
-             AD(hi_v);
+             Number(hi_v);
       return true;
+    }
+
+    // the gap at the point xi of the face along the interpolated normal to
+    // the primary face (y0, y1), with the primary parameter eta
+    template <typename Number>
+    Number
+    point_gap(const MortarPatch<Number> &m,
+              const Number              &xi,
+              const Vec<Number>         &y0,
+              const Vec<Number>         &y1,
+              const bool                 exact,
+              Vec<Number>               &normal,
+              Number                    &eta)
+    {
+      const auto        N = SegmentGeometry::shape(xi);
+      const Vec<Number> x = N[0] * m.x0 + N[1] * m.x1;
+      normal              = N[0] * m.n0 + N[1] * m.n1;
+      normal /= SegmentGeometry::norm(normal);
+      eta = MortarGeometry::intersect_line_with_face(x, normal, y0, y1);
+      if (!exact)
+        eta = Number(scalar(eta));
+      const auto        Np = SegmentGeometry::shape(eta);
+      const Vec<Number> y  = Np[0] * y0 + Np[1] * y1;
+      return (y - x) * normal;
+    }
+
+    // calls f(pf, lo, hi) for the segment of face e that each candidate
+    // primary face pf facing it covers
+    template <typename Number, typename PairData, typename F>
+    void
+    for_each_segment(const PairData            &pair,
+                     const unsigned int         e,
+                     const MortarPatch<Number> &m,
+                     const bool                 exact,
+                     const F                   &f)
+    {
+      const auto &p = pair.primary;
+      for (const unsigned int pf : pair.candidates[e])
+        {
+          const Vec<Number> &y0 = m.xp.at(p.faces[pf][0]);
+          const Vec<Number> &y1 = m.xp.at(p.faces[pf][1]);
+          Number             lo, hi;
+          // only faces that face the secondary one
+          if (scalar(SegmentGeometry::face_normal(y0, y1)) * scalar(m.face_n) >=
+                0 ||
+              !segment_bounds(m, y0, y1, exact, lo, hi))
+            continue;
+          f(pf, lo, hi);
+        }
+    }
+
+    // the weighted gaps of the face's two nodes (the contact potential is
+    // sum_j lambda_j g_j)
+    template <typename Number, typename PairData>
+    std::array<Number, 2>
+    weighted_gaps(const PairData            &pair,
+                  const unsigned int         e,
+                  const MortarPatch<Number> &m,
+                  const QGauss<1>           &gauss)
+    {
+      const auto           &p = pair.primary;
+      std::array<Number, 2> gaps{{Number(0.), Number(0.)}};
+      for_each_segment(
+        pair,
+        e,
+        m,
+        true,
+        [&](const unsigned int pf, const Number &lo, const Number &hi) {
+          const Vec<Number> &y0 = m.xp.at(p.faces[pf][0]);
+          const Vec<Number> &y1 = m.xp.at(p.faces[pf][1]);
+          for (unsigned int q = 0; q < gauss.size(); ++q)
+            {
+              const Number xi  = lo + (hi - lo) * gauss.point(q)[0];
+              const Number JxW = gauss.weight(q) * (hi - lo) * m.half_length;
+              const auto   psi = MortarGeometry::dual_shape(xi);
+              Vec<Number>  normal;
+              Number       eta;
+              const Number g = point_gap(m, xi, y0, y1, true, normal, eta);
+              for (unsigned int i = 0; i < 2; ++i)
+                gaps[i] += psi[i] * g * JxW;
+            }
+        });
+      return gaps;
     }
 
     // the gap, weight, rate and force integrals over the segment [lo, hi]
     // of face e that the primary face pf covers; `rates`: gap rates too
     template <typename PairData>
     void
-    integrate_segment(const PairData    &pair,
-                      const unsigned int e,
-                      const unsigned int pf,
-                      const MortarPatch &m,
-                      const AD          &lo,
-                      const AD          &hi,
-                      const QGauss<1>   &gauss,
-                      const bool         rates,
-                      const bool         exact,
-                      SegmentSums       &sums)
+    integrate_segment(const PairData        &pair,
+                      const unsigned int     e,
+                      const unsigned int     pf,
+                      const MortarPatch<AD> &m,
+                      const AD              &lo,
+                      const AD              &hi,
+                      const QGauss<1>       &gauss,
+                      const bool             rates,
+                      const bool             exact,
+                      SegmentSums           &sums)
     {
       const auto    &s        = pair.secondary;
       const auto    &p        = pair.primary;
@@ -189,19 +334,14 @@ namespace ContactDynamics
       const Vec<AD> &y1       = m.xp.at(p.faces[pf][1]);
       for (unsigned int q = 0; q < gauss.size(); ++q)
         {
-          const AD      xi     = lo + (hi - lo) * gauss.point(q)[0];
-          const AD      JxW    = gauss.weight(q) * (hi - lo) * m.half_length;
-          const auto    N      = SegmentGeometry::shape(xi);
-          const auto    psi    = MortarGeometry::dual_shape(xi);
-          const Vec<AD> x      = N[0] * m.x0 + N[1] * m.x1;
-          Vec<AD>       normal = N[0] * m.n0 + N[1] * m.n1;
-          normal /= SegmentGeometry::norm(normal);
-          AD eta = MortarGeometry::intersect_line_with_face(x, normal, y0, y1);
-          if (!exact)
-            eta = constant(eta);
-          const auto    Np = SegmentGeometry::shape(eta);
-          const Vec<AD> y  = Np[0] * y0 + Np[1] * y1;
-          const AD      g  = (y - x) * normal;
+          const AD   xi  = lo + (hi - lo) * gauss.point(q)[0];
+          const AD   JxW = gauss.weight(q) * (hi - lo) * m.half_length;
+          const auto N   = SegmentGeometry::shape(xi);
+          const auto psi = MortarGeometry::dual_shape(xi);
+          Vec<AD>    normal;
+          AD         eta;
+          const AD   g  = point_gap(m, xi, y0, y1, exact, normal, eta);
+          const auto Np = SegmentGeometry::shape(eta);
           for (unsigned int i = 0; i < 2; ++i)
             {
               sums.gap[i] += psi[i] * g * JxW;
@@ -223,23 +363,30 @@ namespace ContactDynamics
                       psi[i] * (v_rel * SegmentGeometry::rotate(normal)) * JxW;
                 }
             }
-          // contact traction z = sum_j psi_j (lambda_j n_j + lambda_t,j t_j),
-          // acting on both sides
+          // tangential traction z_t = sum_j psi_j lambda_t,j t_j on both
+          // sides; the normal one along the nodal normals for approximate
+          // Jacobians
           const Vec<AD> z_t = AD(psi[0] * m.lambda_t[0]) * m.t0 +
                               AD(psi[1] * m.lambda_t[1]) * m.t1;
-          const Vec<AD> z = AD(psi[0] * m.lambda[0]) * m.n0 +
-                            AD(psi[1] * m.lambda[1]) * m.n1 + z_t;
+          const Vec<AD> z_n =
+            AD(psi[0] * m.lambda[0]) * m.n0 + AD(psi[1] * m.lambda[1]) * m.n1;
           for (unsigned int i = 0; i < 2; ++i)
             for (unsigned int d = 0; d < 2; ++d)
               {
-                sums.rows[s.dofs[face[i]][d]] += N[i] * z[d] * JxW;
-                sums.rows[p.dofs[p.faces[pf][i]][d]] -= Np[i] * z[d] * JxW;
+                const auto rs = s.dofs[face[i]][d];
+                const auto rp = p.dofs[p.faces[pf][i]][d];
+                if (!exact)
+                  {
+                    sums.normal_rows[rs] += N[i] * z_n[d] * JxW;
+                    sums.normal_rows[rp] -= Np[i] * z_n[d] * JxW;
+                  }
                 if (friction)
                   {
+                    sums.rows[rs] += N[i] * z_t[d] * JxW;
+                    sums.rows[rp] -= Np[i] * z_t[d] * JxW;
                     const double ft = (z_t[d] * JxW).val();
-                    sums.tangential_rows[s.dofs[face[i]][d]] += N[i].val() * ft;
-                    sums.tangential_rows[p.dofs[p.faces[pf][i]][d]] -=
-                      Np[i].val() * ft;
+                    sums.tangential_rows[rs] += N[i].val() * ft;
+                    sums.tangential_rows[rp] -= Np[i].val() * ft;
                   }
               }
         }
@@ -262,39 +409,27 @@ namespace ContactDynamics
     // independent variables: positions of the secondary nodes of the face
     // and their neighbours, of the primary nodes, then the multipliers
     ContactAD::NodeVariables<dim> variables(unknowns, state);
-    MortarPatch                   m;
+    MortarPatch<AD>               m;
     const unsigned int            before = s.neighbour(face[0], e);
     const unsigned int            after  = s.neighbour(face[1], e);
+    std::vector<std::pair<const ContactSurface<dim> *, unsigned int>> nodes;
     for (const unsigned int node : {before, face[0], face[1], after})
       if (node != ContactSurface<dim>::invalid)
-        variables.add(s, node, m.xs[node], m.vs[node]);
+        {
+          variables.add(s, node, m.xs[node], m.vs[node]);
+          nodes.emplace_back(&s, node);
+        }
     for (const unsigned int node : primary_nodes<dim>(pair, pair.candidates[e]))
-      variables.add(p, node, m.xp[node], m.vp[node]);
-    m.lambda[0]   = variables.multiplier();
-    m.lambda[1]   = variables.multiplier();
-    m.lambda_t[0] = variables.multiplier();
-    m.lambda_t[1] = variables.multiplier();
-
-    // nodal normals: average of the adjacent unit face normals
-    const auto face_normal = [&](const unsigned int f) {
-      return SegmentGeometry::face_normal(m.xs.at(s.faces[f][0]),
-                                          m.xs.at(s.faces[f][1]));
-    };
-    const auto nodal_normal = [&](const unsigned int node) {
-      Vec<AD> sum;
-      for (const unsigned int f : s.node_faces[node])
-        sum += face_normal(f);
-      sum /= SegmentGeometry::norm(sum);
-      return exact ? sum : constant(sum);
-    };
-    m.x0          = m.xs.at(face[0]);
-    m.x1          = m.xs.at(face[1]);
-    m.n0          = nodal_normal(face[0]);
-    m.n1          = nodal_normal(face[1]);
-    m.face_n      = SegmentGeometry::face_normal(m.x0, m.x1);
-    m.half_length = SegmentGeometry::norm(Vec<AD>(m.x1 - m.x0)) / 2.;
-    m.t0          = SegmentGeometry::rotate(m.n0);
-    m.t1          = SegmentGeometry::rotate(m.n1);
+      {
+        variables.add(p, node, m.xp[node], m.vp[node]);
+        nodes.emplace_back(&p, node);
+      }
+    const unsigned int n_positions = 2 * nodes.size();
+    m.lambda[0]                    = variables.multiplier();
+    m.lambda[1]                    = variables.multiplier();
+    m.lambda_t[0]                  = variables.multiplier();
+    m.lambda_t[1]                  = variables.multiplier();
+    set_face_geometry(s, e, exact, m);
 
     const QGauss<1> gauss(quadrature_points);
     // (the first rate of a held node, the velocity-level condition)
@@ -303,19 +438,82 @@ namespace ContactDynamics
     for (unsigned int i = 0; i < 2; ++i)
       sums.gap[i] = sums.weight[i] = sums.gap_rate[i] = sums.slip_rate[i] =
         AD(0.);
-    for (const unsigned int pf : pair.candidates[e])
-      {
-        const Vec<AD> &y0 = m.xp.at(p.faces[pf][0]);
-        const Vec<AD> &y1 = m.xp.at(p.faces[pf][1]);
-        AD             lo, hi;
-        // only faces that face the secondary one
-        if (value(SegmentGeometry::face_normal(y0, y1)) * value(m.face_n) >=
-              0 ||
-            !segment_bounds(m, y0, y1, exact, lo, hi))
-          continue;
+    for_each_segment(
+      pair,
+      e,
+      m,
+      exact,
+      [&](const unsigned int pf, const AD &lo, const AD &hi) {
         integrate_segment(pair, e, pf, m, lo, hi, gauss, rates, exact, sums);
-      }
+      });
 
+    // The normal force is -sum_j lambda_j d g_j / d u: the derivative of
+    // the weighted gaps the complementarity condition enforces, so that a
+    // held gap does no work. Its Jacobian needs the second derivatives of
+    // the gaps (or, approximate, the nodal-normal traction's).
+    std::array<AD, 2> gaps = {{sums.gap[0], sums.gap[1]}};
+    if (!exact)
+      {
+        MortarPatch<AD> exact_patch = m;
+        set_face_geometry(s, e, true, exact_patch);
+        gaps = weighted_gaps(pair, e, exact_patch, gauss);
+      }
+    const double    lambda[2] = {m.lambda[0].val(), m.lambda[1].val()};
+    std::vector<AD> hessian_rows;
+    if (exact)
+      {
+        MortarPatch<AD2> m2;
+        for (unsigned int k = 0; k < nodes.size(); ++k)
+          {
+            auto &x = (nodes[k].first == &s ? m2.xs : m2.xp)[nodes[k].second];
+            for (unsigned int d = 0; d < 2; ++d)
+              {
+                const unsigned int i = 2 * k + d;
+                const double       value =
+                  nodes[k].first->reference[nodes[k].second][d] +
+                  state.u(unknowns[i]);
+                x[d] = AD2(n_positions, i, AD(n_positions, i, value));
+              }
+          }
+        set_face_geometry(s, e, true, m2);
+        const auto g2        = weighted_gaps(pair, e, m2, gauss);
+        const AD2  potential = lambda[0] * g2[0] + lambda[1] * g2[1];
+        hessian_rows.resize(n_positions);
+        for (unsigned int i = 0; i < n_positions; ++i)
+          hessian_rows[i] = potential.size() > 0 ? potential.dx(i) : AD(0.);
+      }
+    for (unsigned int i = 0; i < n_positions; ++i)
+      {
+        typename PatchForces::Derivatives derivatives;
+        double                            value = 0;
+        for (unsigned int j = 0; j < 2; ++j)
+          if (gaps[j].size() > int(i))
+            {
+              value -= lambda[j] * gaps[j].dx(i);
+              // d / d lambda_j
+              derivatives.emplace_back(unknowns[n_positions + j],
+                                       -gaps[j].dx(i));
+            }
+        if (exact)
+          {
+            const AD &h = hessian_rows[i];
+            for (unsigned int l = 0; l < n_positions && l < unsigned(h.size()); ++l)
+              if (h.dx(l) != 0)
+                derivatives.emplace_back(unknowns[l], -h.dx(l));
+          }
+        else
+          {
+            const auto r = sums.normal_rows.find(unknowns[i]);
+            if (r != sums.normal_rows.end())
+              for (unsigned int l = 0;
+                   l < n_positions && l < unsigned(r->second.size());
+                   ++l)
+                if (r->second.dx(l) != 0)
+                  derivatives.emplace_back(unknowns[l], r->second.dx(l));
+          }
+        if (value != 0 || !derivatives.empty())
+          forces.add(unknowns[i], value, std::move(derivatives));
+      }
     for (const auto &r : sums.rows)
       forces.add(r.first,
                  r.second.val(),
