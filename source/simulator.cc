@@ -463,6 +463,31 @@ namespace ContactDynamics
   }
 
   template <int dim>
+  double
+  Simulator<dim>::apply_velocity_update()
+  {
+    const double work =
+      integrator.is_dynamic() ? contact->velocity_update_request() : 0.;
+    if (work == 0)
+      return 0;
+    // one factor for the velocities of every free degree of freedom:
+    // (1 + s)^2 k = k - work, the smaller correction of the two roots (if
+    // the step created more than all the kinetic energy, all of it goes)
+    const double kinetic =
+      mechanics->kinetic_energy(ghosted(v_new, scratch_ghost[0]));
+    if (!(kinetic > 0))
+      return 0;
+    const double s = std::sqrt(std::max(0., 1. - work / kinetic)) - 1.;
+    for (const auto i : v_new.locally_owned_elements())
+      if (!increment_constraints.is_constrained(i))
+        v_new(i) *= 1. + s;
+    v_new.compress(VectorOperation::insert);
+    const double change = kinetic * ((1. + s) * (1. + s) - 1.);
+    contact->add_velocity_update_work(change);
+    return change;
+  }
+
+  template <int dim>
   void
   Simulator<dim>::assemble(const bool  with_jacobian,
                            VectorType &residual_out,
@@ -619,6 +644,7 @@ namespace ContactDynamics
       {
         // u_ghost: the converged state, as the last assembly saw it
         contact->commit_step(u_ghost, u);
+        energies.kinetic += apply_velocity_update();
         contact_writer->write_history(*contact, t_new);
         energies.frictional = contact->dissipated_energy();
       }

@@ -13,16 +13,16 @@
 
 #include <deal.II/lac/affine_constraints.h>
 
+#include <contact_dynamics/contact/contact_formulation.h>
 #include <contact_dynamics/mechanics/bodies.h>
 #include <contact_dynamics/mechanics/boundary_conditions.h>
-#include <contact_dynamics/contact/contact_formulation.h>
-#include <contact_dynamics/solvers/nonlinear_solver.h>
-#include <contact_dynamics/parallel.h>
-#include <contact_dynamics/output/contact_writer.h>
-#include <contact_dynamics/output/postprocessing.h>
-#include <contact_dynamics/scenes/scene.h>
 #include <contact_dynamics/mechanics/solid_mechanics.h>
 #include <contact_dynamics/mechanics/time_integrator.h>
+#include <contact_dynamics/output/contact_writer.h>
+#include <contact_dynamics/output/postprocessing.h>
+#include <contact_dynamics/parallel.h>
+#include <contact_dynamics/scenes/scene.h>
+#include <contact_dynamics/solvers/nonlinear_solver.h>
 
 #include <deal.II/distributed/shared_tria.h>
 #include <fstream>
@@ -175,6 +175,14 @@ namespace ContactDynamics
     apply_initial_conditions();
     void
     set_trial_velocity_and_acceleration();
+    /**
+     * Stabilization 'velocity update': after a converged step, scales the
+     * velocities of the free degrees of freedom so that the step's normal
+     * contact work returns to kinetic energy; returns the kinetic energy
+     * change.
+     */
+    double
+    apply_velocity_update();
     void
     write_solution();
     void

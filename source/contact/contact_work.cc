@@ -19,6 +19,7 @@ namespace ContactDynamics
       v->reinit(owned_dofs, comm);
     contact_work           = 0;
     frictional_dissipation = 0;
+    last_normal_work       = 0;
   }
 
   void
@@ -49,12 +50,18 @@ namespace ContactDynamics
             friction_work -=
               du * 0.5 * (friction_force(i) + friction_force_committed(i));
         }
-    contact_work += Utilities::MPI::sum(work, comm);
+    double sums[2] = {work, friction_work};
+    Utilities::MPI::sum(ArrayView<const double>(sums, 2),
+                        comm,
+                        ArrayView<double>(sums, 2));
+    contact_work += sums[0];
+    last_normal_work = sums[0] - sums[1];
     if (friction)
       {
-        frictional_dissipation -= Utilities::MPI::sum(friction_work, comm);
+        frictional_dissipation -= sums[1];
         friction_force_committed = friction_force;
       }
     force_committed = force;
   }
+
 } // namespace ContactDynamics

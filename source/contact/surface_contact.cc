@@ -397,7 +397,7 @@ namespace ContactDynamics
         const bool normalize = complementarity.normalize_c_n;
         const bool held      = node.persistent && state.dynamic;
         const auto rates     = complementarity.stabilization;
-        if (held && rates == Stabilization::persistency)
+        if (held && rates != Stabilization::velocity_persistency)
           constraint = held_gap_rate(pair, j, state);
         else
           {

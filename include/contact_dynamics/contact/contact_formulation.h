@@ -196,6 +196,22 @@ namespace ContactDynamics
       return 0;
     }
 
+    /**
+     * Stabilization 'velocity update': the normal contact work of the last
+     * committed step, which the velocities are to return (0: nothing to
+     * correct, or another stabilization).
+     */
+    virtual double
+    velocity_update_request() const
+    {
+      return 0;
+    }
+
+    /** The kinetic energy the velocity correction added. */
+    virtual void
+    add_velocity_update_work(const double)
+    {}
+
     /** Energy dissipated by the contact so far (friction). */
     virtual double
     dissipated_energy() const

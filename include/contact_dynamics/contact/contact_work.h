@@ -64,6 +64,21 @@ namespace ContactDynamics
     commit(const TrilinosWrappers::MPI::Vector &u,
            const TrilinosWrappers::MPI::Vector &old_u);
 
+    /** The work of the normal (frictionless) forces in the last step. */
+    double
+    normal_step_work() const
+    {
+      return last_normal_work;
+    }
+
+    /** Kinetic energy a velocity correction gave the bodies at contact. */
+    void
+    add_impulse_work(const double work)
+    {
+      contact_work += work;
+      last_normal_work += work;
+    }
+
     /** Work of the contact forces on the bodies so far. */
     double
     work() const
@@ -88,6 +103,7 @@ namespace ContactDynamics
     TrilinosWrappers::MPI::Vector friction_force, friction_force_committed;
     double                        contact_work           = 0;
     double                        frictional_dissipation = 0;
+    double                        last_normal_work       = 0;
   };
 } // namespace ContactDynamics
 

@@ -49,8 +49,7 @@ namespace ContactDynamics
     bool
     holds_contact() const
     {
-      return stabilization == Stabilization::persistency ||
-             stabilization == Stabilization::velocity_persistency;
+      return stabilization != Stabilization::none;
     }
 
     /** Declares the entries with the values of `defaults` as defaults. */
@@ -137,6 +136,20 @@ namespace ContactDynamics
 
     std::vector<double>
     statistics() const override;
+
+    double
+    velocity_update_request() const override
+    {
+      return complementarity.stabilization == Stabilization::velocity_update ?
+               work.normal_step_work() :
+               0.;
+    }
+
+    void
+    add_velocity_update_work(const double work_done) override
+    {
+      work.add_impulse_work(work_done);
+    }
 
     double
     dissipated_energy() const override
