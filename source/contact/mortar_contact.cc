@@ -170,16 +170,17 @@ namespace ContactDynamics
     // of face e that the primary face pf covers; `rates`: gap rates too
     template <typename PairData>
     void
-    integrate_segment(const PairData    &pair,
-                      const unsigned int e,
-                      const unsigned int pf,
-                      const MortarPatch &m,
-                      const AD          &lo,
-                      const AD          &hi,
-                      const QGauss<1>   &gauss,
-                      const bool         rates,
-                      const bool         exact,
-                      SegmentSums       &sums)
+    integrate_segment(const PairData                         &pair,
+                      const unsigned int                      e,
+                      const unsigned int                      pf,
+                      const MortarPatch                      &m,
+                      const AD                               &lo,
+                      const AD                               &hi,
+                      const std::array<std::array<AD, 2>, 2> &dual,
+                      const QGauss<1>                        &gauss,
+                      const bool                              rates,
+                      const bool                              exact,
+                      SegmentSums                            &sums)
     {
       const auto    &s        = pair.secondary;
       const auto    &p        = pair.primary;
@@ -192,7 +193,7 @@ namespace ContactDynamics
           const AD      xi     = lo + (hi - lo) * gauss.point(q)[0];
           const AD      JxW    = gauss.weight(q) * (hi - lo) * m.half_length;
           const auto    N      = SegmentGeometry::shape(xi);
-          const auto    psi    = MortarGeometry::dual_shape(xi);
+          const auto    psi    = MortarGeometry::dual_shape(xi, dual);
           const Vec<AD> x      = N[0] * m.x0 + N[1] * m.x1;
           Vec<AD>       normal = N[0] * m.n0 + N[1] * m.n1;
           normal /= SegmentGeometry::norm(normal);
@@ -224,7 +225,8 @@ namespace ContactDynamics
                 }
             }
           // contact traction z = sum_j psi_j (lambda_j n_j + lambda_t,j t_j),
-          // acting on both sides
+          // acting on both sides (nodal normals: measured against the
+          // interpolated normal n(xi) in doc/contact.md)
           const Vec<AD> z_t = AD(psi[0] * m.lambda_t[0]) * m.t0 +
                               AD(psi[1] * m.lambda_t[1]) * m.t1;
           const Vec<AD> z = AD(psi[0] * m.lambda[0]) * m.n0 +
@@ -302,6 +304,11 @@ namespace ContactDynamics
     for (unsigned int i = 0; i < 2; ++i)
       sums.gap[i] = sums.weight[i] = sums.gap_rate[i] = sums.slip_rate[i] =
         AD(0.);
+    // the mortar segments: the parts of the face that primary faces
+    // (facing it) cover
+    std::vector<unsigned int>      segment_faces;
+    std::vector<std::pair<AD, AD>> segments;
+    double                         covered = 0;
     for (const unsigned int pf : pair.candidates[e])
       {
         const Vec<AD> &y0 = m.xp.at(p.faces[pf][0]);
@@ -312,7 +319,30 @@ namespace ContactDynamics
               0 ||
             !segment_bounds(m, y0, y1, exact, lo, hi))
           continue;
-        integrate_segment(pair, e, pf, m, lo, hi, gauss, rates, exact, sums);
+        segment_faces.push_back(pf);
+        segments.emplace_back(lo, hi);
+        covered += (hi.val() - lo.val()) / 2;
+      }
+    // the dual basis of the covered part (A_e = D_e M_e^-1 over all the
+    // segments first), linearized through the segment ends; a sliver (M_e
+    // nearly singular) contributes nothing
+    if (covered < minimum_covered_fraction)
+      segments.clear();
+    if (!segments.empty())
+      {
+        const auto dual = MortarGeometry::dual_coefficients(segments);
+        for (unsigned int i = 0; i < segments.size(); ++i)
+          integrate_segment(pair,
+                            e,
+                            segment_faces[i],
+                            m,
+                            segments[i].first,
+                            segments[i].second,
+                            dual,
+                            gauss,
+                            rates,
+                            exact,
+                            sums);
       }
 
     for (const auto &r : sums.rows)
