@@ -8,6 +8,13 @@
 // with the persistency (gap velocity) condition after an impact. The
 // 'approximate' Jacobian, which drops the geometric derivatives, must
 // differ from the finite differences in contact.
+// Mortar also on the contact rows alone (the multiplier rows and the force
+// rows of surface nodes, each group relative to its own norm, so that the
+// bulk rows cannot hide an error): on the curved interface of the Hertz
+// cylinder (frictionless, stick, slip) and on the partially covered faces
+// of the 'two blocks' scene (the wide lower block as the secondary side:
+// the primary surface ends inside two of its faces; frictionless, stick,
+// slip).
 #include <deal.II/dofs/dof_tools.h>
 
 #include <contact_dynamics/contact/surface_contact.h>
@@ -182,7 +189,173 @@ end
     else
       check_true(name + ": differs from FD by more than 1e-3", error > 1e-3);
   }
+  // |J d - FD| / |J d| on the multiplier rows and on the force rows (the
+  // displacement rows that the multipliers reach) separately
+  void
+  check_contact_rows(const std::string &name,
+                     const std::string &text,
+                     const double       lambda_scale,
+                     const double       t_scale)
+  {
+    ParameterHandler prm;
+    read_test_parameters("rows.prm", text, prm);
+    std::ostringstream            screen;
+    ContactDynamics::Simulator<2> simulator(prm, screen);
+    simulator.initialize();
+    const auto &constraints = simulator.get_constraints();
+    const auto  tangential =
+      DoFTools::extract_dofs(simulator.get_dof_handler(),
+                             ComponentMask(
+                               std::vector<bool>{false, false, false, true}));
+    const auto &normal = simulator.get_contact()->multiplier_dofs();
+    std::set<types::global_dof_index> lambda(normal.begin(), normal.end());
+    for (const auto i : tangential)
+      if (!constraints.is_constrained(i))
+        lambda.insert(i);
+
+    std::mt19937                           rng(11);
+    std::uniform_real_distribution<double> uniform(-1., 1.);
+    VectorType trial(simulator.displacement()), direction(trial), mask(trial);
+    mask = 0.;
+    for (unsigned int i = 0; i < trial.size(); ++i)
+      if (lambda.count(i))
+        {
+          trial(i)     = tangential.is_element(i) ?
+                           t_scale * uniform(rng) :
+                           lambda_scale * (1.5 + uniform(rng));
+          direction(i) = 100 * uniform(rng);
+          mask(i)      = 1. + uniform(rng);
+        }
+      else
+        {
+          trial(i) += 1e-4 * uniform(rng);
+          direction(i) = 1e-3 * uniform(rng);
+        }
+    constraints.set_zero(direction);
+
+    VectorType   r_plus(trial), r_minus(trial), r(trial), jd(trial), jm(trial);
+    const double h = 1e-7;
+    VectorType   shifted(trial);
+    shifted.add(h, direction);
+    simulator.residual_and_jacobian(shifted, 0.01, r_plus);
+    shifted.add(-2 * h, direction);
+    simulator.residual_and_jacobian(shifted, 0.01, r_minus);
+    const auto &J = simulator.residual_and_jacobian(trial, 0.01, r);
+    J.vmult(jd, direction);
+    J.vmult(jm, mask);
+    r_plus -= r_minus;
+    r_plus /= 2 * h;
+    double       error[2] = {0, 0}, norm[2] = {0, 0};
+    unsigned int n_rows[2] = {0, 0};
+    for (unsigned int i = 0; i < trial.size(); ++i)
+      {
+        const int group = lambda.count(i) ? 0 : (jm(i) != 0 ? 1 : -1);
+        if (group < 0 || constraints.is_constrained(i))
+          continue;
+        ++n_rows[group];
+        error[group] += std::pow(r_plus(i) - jd(i), 2);
+        norm[group] += std::pow(jd(i), 2);
+      }
+    const auto *contact =
+      dynamic_cast<const ContactDynamics::SurfaceContact<2> *>(
+        simulator.get_contact());
+    unsigned int n_active = 0, n_stick = 0;
+    for (const auto &node : contact->node_states(0))
+      {
+        n_active += node.active;
+        n_stick += node.stick;
+      }
+    deallog << name << ": multiplier rows " << n_rows[0] << ", force rows "
+            << n_rows[1] << ", active nodes " << n_active << ", stick nodes "
+            << n_stick << std::endl;
+    check_close(name + ": multiplier rows |J d - FD| / |J d|",
+                std::sqrt(error[0] / norm[0]),
+                0.,
+                1e-6);
+    check_close(name + ": force rows |J d - FD| / |J d|",
+                std::sqrt(error[1] / norm[1]),
+                0.,
+                1e-6);
+  }
+
+  std::string
+  rows_parameters(const std::string &scene, const std::string &friction)
+  {
+    const bool hertz = scene == "hertz";
+    return std::string(R"(
+subsection Scene
+  set Scene = )") +
+           scene + R"(
+  set Refinement factor = )" +
+           (hertz ? "0.3" : "1") + R"(
+end
+subsection Body )" +
+           (hertz ? "cylinder" : "upper") + R"(
+  set Young's modulus = 1000
+  set Poisson's ratio = 0.3
+  set Initial displacement = )" +
+           (hertz ? "0.001 + 0.003*x; -0.03 + 0.003*x" :
+                    "0.001*x; -0.002 + 0.001*x") +
+           R"(
+end
+subsection Body )" +
+           (hertz ? "block" : "lower") + R"(
+  set Young's modulus = 1000
+  set Poisson's ratio = 0.3
+end
+subsection Boundary conditions
+  set Dirichlet = )" +
+           (hertz ? "block_bottom" : "lower_bottom") + R"(: xy: 0
+end
+subsection Time integration
+  set Scheme = quasi-static
+  set Time step = 0.01
+end
+subsection Contact
+  set Formulation = mortar
+  set Pairs = )" +
+           (hertz ? "cylinder_arc: block_top" : "lower_top: upper_bottom") +
+           R"(
+  set Initial penetration = allow
+  set Friction coefficients = )" +
+           friction + R"(
+  subsection Mortar
+    set c_n = 1e4
+    set c_t = 10
+    set Segment quadrature points = 3
+  end
+end
+subsection Output
+  set Output directory = output_rows
+  set VTU interval = 0
+end
+)";
+  }
 } // namespace
+
+void
+check_contact_rows_all()
+{
+  for (const std::string scene : {"hertz", "two blocks"})
+    {
+      const std::string label =
+        "mortar rows, " + std::string(scene == "hertz" ?
+                                        "curved (Hertz)" :
+                                        "partially covered (two blocks)");
+      check_contact_rows(label + ", frictionless",
+                         rows_parameters(scene, "0"),
+                         200,
+                         0);
+      check_contact_rows(label + ", stick",
+                         rows_parameters(scene, "0.3"),
+                         200,
+                         1);
+      check_contact_rows(label + ", slip",
+                         rows_parameters(scene, "0.3"),
+                         200,
+                         500);
+    }
+}
 
 void
 check_all(const std::string &prefix)
@@ -250,6 +423,7 @@ main()
   initlog();
   check_all("mortar: ");
   check_friction("mortar: ");
+  check_contact_rows_all();
   formulation = "nts";
   check_all("nts: ");
   check_friction("nts: ");

@@ -4,14 +4,24 @@
 // below it:
 //  - offset: flat at y = -d over x in [-0.3, 1.2]: g_j = d/2 (integral of
 //    psi_j = integral of N_j = 1/2);
-//  - partial: flat at y = -d over x in [-0.3, 0.5], covering half the face:
-//    g_0 = d int_0^1/2 (2 - 3x) dx = 0.625 d, g_1 = d int_0^1/2 (3x - 1) dx =
-//    -0.125 d;
+//  - partial: flat at y = -d over x in [-0.3, 0.5], covering half the face.
+//    The dual basis of the covered part [0, 1/2] (by hand: D = diag(3/8,
+//    1/8), M = (1/24) [[7, 2], [2, 1]], M^-1 = 8 [[1, -2], [-2, 7]],
+//    A = D M^-1 = [[3, -6], [-2, 7]]) is psi_0 = 3 - 9x, psi_1 = 9x - 2:
+//    g_0 = d int_0^1/2 (3 - 9x) dx = 3/8 d, g_1 = d int_0^1/2 (9x - 2) dx =
+//    1/8 d, both positive for the clear gap (the dual functions of the
+//    whole face gave 0.625 d and -0.125 d, a weighted penetration);
+//  - partial and tilted: gap d + s x over the same half: linear, so by
+//    biorthogonality g_j = (gap at node j) int_0^1/2 N_j: g_0 = 3/8 d,
+//    g_1 = (d + s)/8;
 //  - tilted: gap d + s x: the gap is linear, so by biorthogonality
 //    g_j = (nodal gap) / 2: g_0 = d/2, g_1 = (d + s)/2;
 //  - kinked: gap d + s |x - 1/2| over two primary faces:
 //    g_j = d/2 + s int_0^1 psi_j |x - 1/2| dx = d/2 + s/8.
-// Also: the dual basis is biorthogonal and sums to one, and on the kinked
+// Also: the dual basis is biorthogonal and sums to one, on the whole face
+// and on covered parts (one end, the middle, two pieces, a sliver of 1e-3 of
+// the face; a face covered by two segments without gap gets the closed form
+// exactly), and on the kinked
 // interface and on a curved one (the Hertz cylinder's arc, with nodal
 // normals that vary) the contact forces on both sides cancel to round-off.
 #include <deal.II/base/quadrature_lib.h>
@@ -212,13 +222,72 @@ main()
   check_close("biorthogonality of the dual basis", worst, 0., 1e-15);
   check_close("partition of unity of the dual basis", worst_sum, 0., 1e-15);
 
+  // the dual basis of covered parts: biorthogonal on what is covered
+  {
+    using Segments = std::vector<std::pair<double, double>>;
+    const QGauss<1> q3(3); // integrates psi_i N_j exactly
+    const auto      check_covered = [&](const std::string &name,
+                                   const Segments    &segments,
+                                   const double       tolerance) {
+      const auto a     = dual_coefficients(segments);
+      double     error = 0, sum_error = 0, D[2] = {0, 0};
+      double     integral[2][2] = {{0, 0}, {0, 0}};
+      for (const auto &seg : segments)
+        for (unsigned int q = 0; q < q3.size(); ++q)
+          {
+            const double xi =
+              seg.first + (seg.second - seg.first) * q3.point(q)[0];
+            const double w   = (seg.second - seg.first) * q3.weight(q);
+            const auto   psi = dual_shape(xi, a);
+            const auto   N   = shape(xi);
+            sum_error = std::max(sum_error, std::abs(psi[0] + psi[1] - 1));
+            for (unsigned int i = 0; i < 2; ++i)
+              {
+                D[i] += N[i] * w;
+                for (unsigned int j = 0; j < 2; ++j)
+                  integral[i][j] += psi[i] * N[j] * w;
+              }
+          }
+      // relative to integral N_j of the node
+      for (unsigned int i = 0; i < 2; ++i)
+        for (unsigned int j = 0; j < 2; ++j)
+          error =
+            std::max(error,
+                     std::abs(integral[i][j] - (i == j ? D[j] : 0.)) / D[j]);
+      check_close(name + ": biorthogonality on the covered part",
+                  error,
+                  0.,
+                  tolerance);
+      check_close(name + ": partition of unity", sum_error, 0., tolerance);
+    };
+    check_covered("one end", {{-1., 0.}}, 1e-14);
+    check_covered("middle", {{-0.3, 0.4}}, 1e-14);
+    check_covered("two pieces", {{-1., -0.5}, {0.2, 0.9}}, 1e-14);
+    // condition number of M about 1.2e7; measured 2e-13
+    check_covered("sliver of 1e-3", {{-1., -1. + 2e-3}}, 1e-11);
+    const auto a = dual_coefficients(Segments{{-1., 0.1}, {0.1, 1.}});
+    check_true("covered by two segments: closed form exactly",
+               a[0][0] == 2. && a[0][1] == -1. && a[1][0] == -1. &&
+                 a[1][1] == 2.);
+    const auto h = dual_coefficients(Segments{{-1., 0.}});
+    check_close("one end: A = [[3, -6], [-2, 7]] (by hand)",
+                std::abs(h[0][0] - 3) + std::abs(h[0][1] + 6) +
+                  std::abs(h[1][0] + 2) + std::abs(h[1][1] - 7),
+                0.,
+                1e-13);
+  }
+
   const double d = 0.01, s = 0.02;
   auto         g = weighted_gaps("offset", {{-0.3, -d}, {1.2, -d}});
   check_close("offset: g_0", g.first, d / 2, 1e-14);
   check_close("offset: g_1", g.second, d / 2, 1e-14);
   g = weighted_gaps("partial", {{-0.3, -d}, {0.5, -d}});
-  check_close("partial: g_0", g.first, 0.625 * d, 1e-14);
-  check_close("partial: g_1", g.second, -0.125 * d, 1e-14);
+  check_close("partial: g_0", g.first, 3. / 8 * d, 1e-14);
+  check_close("partial: g_1", g.second, 1. / 8 * d, 1e-14);
+  g = weighted_gaps("partial_tilted",
+                    {{-0.3, -d + 0.3 * s}, {0.5, -d - 0.5 * s}});
+  check_close("partial tilted: g_0", g.first, 3. / 8 * d, 1e-14);
+  check_close("partial tilted: g_1", g.second, (d + s) / 8, 1e-14);
   g = weighted_gaps("tilted", {{-0.3, -d + 0.3 * s}, {1.2, -d - 1.2 * s}});
   check_close("tilted: g_0", g.first, d / 2, 1e-14);
   check_close("tilted: g_1", g.second, (d + s) / 2, 1e-14);

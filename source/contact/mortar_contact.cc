@@ -252,29 +252,52 @@ namespace ContactDynamics
       return (y - x) * normal;
     }
 
-    // calls f(pf, lo, hi) for the segment of face e that each candidate
-    // primary face pf facing it covers
-    template <typename Number, typename PairData, typename F>
-    void
-    for_each_segment(const PairData            &pair,
-                     const unsigned int         e,
-                     const MortarPatch<Number> &m,
-                     const bool                 exact,
-                     const F                   &f)
+    // the mortar segments of face e: the parts [lo, hi] that candidate
+    // primary faces pf (facing it) cover; none if they cover a sliver only
+    template <typename Number>
+    struct Segments
     {
-      const auto &p = pair.primary;
+      std::vector<unsigned int>              faces;
+      std::vector<std::pair<Number, Number>> bounds;
+      // the dual basis of the covered part
+      std::array<std::array<Number, 2>, 2> dual;
+    };
+
+    template <typename Number, typename PairData>
+    Segments<Number>
+    mortar_segments(const PairData            &pair,
+                    const unsigned int         e,
+                    const MortarPatch<Number> &m,
+                    const bool                 exact,
+                    const double               minimum_covered_fraction)
+    {
+      const auto      &p = pair.primary;
+      Segments<Number> segments;
+      double           covered = 0;
       for (const unsigned int pf : pair.candidates[e])
         {
           const Vec<Number> &y0 = m.xp.at(p.faces[pf][0]);
           const Vec<Number> &y1 = m.xp.at(p.faces[pf][1]);
           Number             lo, hi;
-          // only faces that face the secondary one
           if (scalar(SegmentGeometry::face_normal(y0, y1)) * scalar(m.face_n) >=
                 0 ||
               !segment_bounds(m, y0, y1, exact, lo, hi))
             continue;
-          f(pf, lo, hi);
+          segments.faces.push_back(pf);
+          segments.bounds.emplace_back(lo, hi);
+          covered += (scalar(hi) - scalar(lo)) / 2;
         }
+      // the dual basis of the covered part (A_e = D_e M_e^-1 over all the
+      // segments), linearized through the segment ends; a sliver (M_e
+      // nearly singular) contributes nothing
+      if (covered < minimum_covered_fraction)
+        {
+          segments.faces.clear();
+          segments.bounds.clear();
+        }
+      if (!segments.bounds.empty())
+        segments.dual = MortarGeometry::dual_coefficients(segments.bounds);
+      return segments;
     }
 
     // the weighted gaps of the face's two nodes (the contact potential is
@@ -282,32 +305,31 @@ namespace ContactDynamics
     template <typename Number, typename PairData>
     std::array<Number, 2>
     weighted_gaps(const PairData            &pair,
-                  const unsigned int         e,
                   const MortarPatch<Number> &m,
+                  const Segments<Number>    &segments,
                   const QGauss<1>           &gauss)
     {
       const auto           &p = pair.primary;
       std::array<Number, 2> gaps{{Number(0.), Number(0.)}};
-      for_each_segment(
-        pair,
-        e,
-        m,
-        true,
-        [&](const unsigned int pf, const Number &lo, const Number &hi) {
+      for (unsigned int k = 0; k < segments.faces.size(); ++k)
+        {
+          const unsigned int pf = segments.faces[k];
+          const Number      &lo = segments.bounds[k].first;
+          const Number      &hi = segments.bounds[k].second;
           const Vec<Number> &y0 = m.xp.at(p.faces[pf][0]);
           const Vec<Number> &y1 = m.xp.at(p.faces[pf][1]);
           for (unsigned int q = 0; q < gauss.size(); ++q)
             {
               const Number xi  = lo + (hi - lo) * gauss.point(q)[0];
               const Number JxW = gauss.weight(q) * (hi - lo) * m.half_length;
-              const auto   psi = MortarGeometry::dual_shape(xi);
+              const auto   psi = MortarGeometry::dual_shape(xi, segments.dual);
               Vec<Number>  normal;
               Number       eta;
               const Number g = point_gap(m, xi, y0, y1, true, normal, eta);
               for (unsigned int i = 0; i < 2; ++i)
                 gaps[i] += psi[i] * g * JxW;
             }
-        });
+        }
       return gaps;
     }
 
@@ -315,16 +337,17 @@ namespace ContactDynamics
     // of face e that the primary face pf covers; `rates`: gap rates too
     template <typename PairData>
     void
-    integrate_segment(const PairData        &pair,
-                      const unsigned int     e,
-                      const unsigned int     pf,
-                      const MortarPatch<AD> &m,
-                      const AD              &lo,
-                      const AD              &hi,
-                      const QGauss<1>       &gauss,
-                      const bool             rates,
-                      const bool             exact,
-                      SegmentSums           &sums)
+    integrate_segment(const PairData                         &pair,
+                      const unsigned int                      e,
+                      const unsigned int                      pf,
+                      const MortarPatch<AD>                  &m,
+                      const AD                               &lo,
+                      const AD                               &hi,
+                      const std::array<std::array<AD, 2>, 2> &dual,
+                      const QGauss<1>                        &gauss,
+                      const bool                              rates,
+                      const bool                              exact,
+                      SegmentSums                            &sums)
     {
       const auto    &s        = pair.secondary;
       const auto    &p        = pair.primary;
@@ -337,7 +360,7 @@ namespace ContactDynamics
           const AD   xi  = lo + (hi - lo) * gauss.point(q)[0];
           const AD   JxW = gauss.weight(q) * (hi - lo) * m.half_length;
           const auto N   = SegmentGeometry::shape(xi);
-          const auto psi = MortarGeometry::dual_shape(xi);
+          const auto psi = MortarGeometry::dual_shape(xi, dual);
           Vec<AD>    normal;
           AD         eta;
           const AD   g  = point_gap(m, xi, y0, y1, exact, normal, eta);
@@ -438,14 +461,20 @@ namespace ContactDynamics
     for (unsigned int i = 0; i < 2; ++i)
       sums.gap[i] = sums.weight[i] = sums.gap_rate[i] = sums.slip_rate[i] =
         AD(0.);
-    for_each_segment(
-      pair,
-      e,
-      m,
-      exact,
-      [&](const unsigned int pf, const AD &lo, const AD &hi) {
-        integrate_segment(pair, e, pf, m, lo, hi, gauss, rates, exact, sums);
-      });
+    const auto segments =
+      mortar_segments(pair, e, m, exact, minimum_covered_fraction);
+    for (unsigned int k = 0; k < segments.faces.size(); ++k)
+      integrate_segment(pair,
+                        e,
+                        segments.faces[k],
+                        m,
+                        segments.bounds[k].first,
+                        segments.bounds[k].second,
+                        segments.dual,
+                        gauss,
+                        rates,
+                        exact,
+                        sums);
 
     // The normal force is -sum_j lambda_j d g_j / d u: the derivative of
     // the weighted gaps the complementarity condition enforces, so that a
@@ -456,7 +485,11 @@ namespace ContactDynamics
       {
         MortarPatch<AD> exact_patch = m;
         set_face_geometry(s, e, true, exact_patch);
-        gaps = weighted_gaps(pair, e, exact_patch, gauss);
+        gaps = weighted_gaps(
+          pair,
+          exact_patch,
+          mortar_segments(pair, e, exact_patch, true, minimum_covered_fraction),
+          gauss);
       }
     const double    lambda[2] = {m.lambda[0].val(), m.lambda[1].val()};
     std::vector<AD> hessian_rows;
@@ -476,8 +509,12 @@ namespace ContactDynamics
               }
           }
         set_face_geometry(s, e, true, m2);
-        const auto g2        = weighted_gaps(pair, e, m2, gauss);
-        const AD2  potential = lambda[0] * g2[0] + lambda[1] * g2[1];
+        const auto g2 = weighted_gaps(
+          pair,
+          m2,
+          mortar_segments(pair, e, m2, true, minimum_covered_fraction),
+          gauss);
+        const AD2 potential = lambda[0] * g2[0] + lambda[1] * g2[1];
         hessian_rows.resize(n_positions);
         for (unsigned int i = 0; i < n_positions; ++i)
           hessian_rows[i] = potential.size() > 0 ? potential.dx(i) : AD(0.);
@@ -497,7 +534,8 @@ namespace ContactDynamics
         if (exact)
           {
             const AD &h = hessian_rows[i];
-            for (unsigned int l = 0; l < n_positions && l < unsigned(h.size()); ++l)
+            for (unsigned int l = 0; l < n_positions && l < unsigned(h.size());
+                 ++l)
               if (h.dx(l) != 0)
                 derivatives.emplace_back(unknowns[l], -h.dx(l));
           }

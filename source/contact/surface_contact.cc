@@ -385,9 +385,7 @@ namespace ContactDynamics
     node.pressure = lambda * traction_per_multiplier(pair, j, state.u);
     node.gap      = pair.gap[j].value;
     node.weight   = pair.weight[j].value;
-    // a mortar node needs more than half its support covered: on a sliver
-    // the dual function can be negative and turn a clear gap into a
-    // weighted penetration
+    // a node counts once the formulation's coverage rule lets it
     node.projected = node.weight > minimum_coverage() * scale;
 
     // the constraint quantity c * g / w (or its rate) and its derivatives

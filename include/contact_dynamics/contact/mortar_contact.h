@@ -29,11 +29,24 @@ namespace ContactDynamics
   protected:
     using PairData = typename SurfaceContact<dim>::PairData;
 
-    /** More than half of the support of the dual function must be covered. */
+    /**
+     * Covered fraction of a secondary face below which it contributes
+     * nothing: the mass matrix of the covered part, whose inverse gives the
+     * dual basis, has a condition number of about 12 / c^2 (1.2e7 here),
+     * and the derivatives through its inverse lose about as many digits.
+     */
+    static constexpr double minimum_covered_fraction = 1e-3;
+
+    /**
+     * Any weight will do: the dual basis of the covered part keeps the
+     * normalized weighted gap of every node of a contributing face bounded
+     * (for a linear gap it is the gap at the node), and that node's weight
+     * is at least minimum_covered_fraction^2 / 2 of the face length.
+     */
     double
     minimum_coverage() const override
     {
-      return 0.5;
+      return 0.;
     }
 
     /** A patch is a secondary face. */

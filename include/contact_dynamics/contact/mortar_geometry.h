@@ -6,8 +6,11 @@
 
 #include <contact_dynamics/contact/segment_geometry.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 namespace ContactDynamics
 {
@@ -28,6 +31,79 @@ namespace ContactDynamics
     dual_shape(const Number &xi)
     {
       return {{(1. - 3. * xi) / 2., (1. + 3. * xi) / 2.}};
+    }
+
+    // the value of a double or of an AD number
+    inline double
+    value_of(const double x)
+    {
+      return x;
+    }
+
+    template <typename Number>
+    double
+    value_of(const Number &x)
+    {
+      return value_of(x.val()); // (nested AD numbers too)
+    }
+
+    /**
+     * Coefficients a_jk of the dual basis psi_j = a_j0 N_0 + a_j1 N_1 of a
+     * face of which only the segments [lo, hi] (in xi) are covered:
+     * A = D M^-1 with D_jj = integral N_j and M_jk = integral N_j N_k over
+     * the covered segments, so that integral(psi_j N_k) = delta_jk
+     * integral(N_k) holds on what is integrated (Popp, Wohlmuth, Gee, Wall,
+     * SIAM J Sci Comput 34 (2012); CMAME 264 (2013)); sum_j psi_j = 1 still.
+     * The length of the face scales D and M alike and cancels. A face
+     * covered without gaps or overlaps gets the closed form of dual_shape()
+     * exactly. M is singular when nothing is covered; its condition number
+     * is about 12 / c^2 for a covered fraction c at one end.
+     */
+    template <typename Number>
+    std::array<std::array<Number, 2>, 2>
+    dual_coefficients(const std::vector<std::pair<Number, Number>> &segments)
+    {
+      std::vector<std::pair<double, double>> bounds;
+      for (const auto &s : segments)
+        bounds.emplace_back(value_of(s.first), value_of(s.second));
+      std::sort(bounds.begin(), bounds.end());
+      bool full = !bounds.empty() && bounds.front().first == -1. &&
+                  bounds.back().second == 1.;
+      for (unsigned int i = 0; full && i + 1 < bounds.size(); ++i)
+        full = std::abs(bounds[i].second - bounds[i + 1].first) < 1e-14;
+      if (full)
+        return {{{{Number(2.), Number(-1.)}}, {{Number(-1.), Number(2.)}}}};
+
+      // two Gauss points per segment integrate the products exactly
+      Number       D[2] = {0., 0.}, M[2][2] = {{0., 0.}, {0., 0.}};
+      const double gauss = 1. / std::sqrt(3.);
+      for (const auto &s : segments)
+        for (const double q : {-gauss, gauss})
+          {
+            const Number xi =
+              (s.first + s.second) / 2. + (s.second - s.first) / 2. * q;
+            const Number w = (s.second - s.first) / 2.;
+            const auto   N = SegmentGeometry::shape(xi);
+            for (unsigned int j = 0; j < 2; ++j)
+              {
+                D[j] += w * N[j];
+                for (unsigned int k = 0; k < 2; ++k)
+                  M[j][k] += w * N[j] * N[k];
+              }
+          }
+      const Number det = M[0][0] * M[1][1] - M[0][1] * M[1][0];
+      return {{{{D[0] * M[1][1] / det, -D[0] * M[0][1] / det}},
+               {{-D[1] * M[1][0] / det, D[1] * M[0][0] / det}}}};
+    }
+
+    /** The dual functions at xi for the coefficients a of dual_coefficients. */
+    template <typename Number>
+    std::array<Number, 2>
+    dual_shape(const Number &xi, const std::array<std::array<Number, 2>, 2> &a)
+    {
+      const auto N = SegmentGeometry::shape(xi);
+      return {
+        {a[0][0] * N[0] + a[0][1] * N[1], a[1][0] * N[0] + a[1][1] * N[1]}};
     }
 
     /**
