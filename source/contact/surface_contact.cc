@@ -697,7 +697,7 @@ namespace ContactDynamics
     // its straight path relative to a primary face passed through the face
     // from outside and ends more than `depth` behind it; or (2) projected
     // with a penetration beyond `own_depth`: a converged gap condition
-    // leaves none, a held node none deeper than half an element.
+    // leaves none, a held node none deeper than half a primary element.
     std::ostringstream failure;
     for (unsigned int p = 0; p < pairs.size() && failure.str().empty(); ++p)
       {
@@ -726,19 +726,26 @@ namespace ContactDynamics
                              << ", " << x0[1] << ") at the last step) ";
             };
             // a held (persistent) node may sink by dt/2 times the approach
-            // rate it had, but not by half an element: deeper, the mesh no
-            // longer resolves the contact (it may pass a thin body)
-            const double own_depth = std::max(complementarity.capture_tolerance,
-                                              (node.persistent ? 0.5 : 1e-2) *
-                                                2 * s.reference_weight[j]);
+            // rate it had, but not by half the depth of the primary elements
+            // it faces: deeper, the mesh no longer resolves the contact (a
+            // node may pass a thin body and leave the search's reach)
+            double element_depth = 1e300;
+            for (const unsigned int e : faces[j])
+              element_depth = std::min(element_depth, f.depth[e]);
+            const double own_depth =
+              std::max(complementarity.capture_tolerance,
+                       node.persistent ? 0.5 * element_depth :
+                                         1e-2 * 2 * s.reference_weight[j]);
             if (node.projected && node.normalized_gap() < -own_depth)
               {
-                where() << "penetrates by " << -node.normalized_gap()
-                        << (node.persistent ?
-                              " while held, more than half an element (" :
-                              " at its first contact, more than a converged "
-                              "gap condition allows (")
-                        << own_depth << ")";
+                where()
+                  << "penetrates by " << -node.normalized_gap()
+                  << (node.persistent ?
+                        " while held, more than half the depth of the primary "
+                        "elements (" :
+                        " at its first contact, more than a converged "
+                        "gap condition allows (")
+                  << own_depth << ")";
                 break;
               }
             if (node.active)
@@ -771,8 +778,7 @@ namespace ContactDynamics
       }
     std::string message = failure.str();
     if (!message.empty())
-      message += " (the search or the projection missed it; a smaller time "
-                 "step is tried)";
+      message += "; the step is rejected and a smaller one tried";
     // the same decision on every process
     if (Utilities::MPI::n_mpi_processes(comm) > 1)
       for (const auto &m : Utilities::MPI::all_gather(comm, message))
