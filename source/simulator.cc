@@ -629,6 +629,9 @@ namespace ContactDynamics
         updated.elastic = mechanics->elastic_energy(u_ghost);
         if (!std::isfinite(updated.error()))
           failure = "the energies are not finite numbers";
+        // e.g. a node that went through a surface unnoticed
+        if (failure.empty() && contact)
+          failure = contact->check_step(u_ghost);
       }
     if (!failure.empty() || !result.converged)
       {

@@ -22,6 +22,7 @@ namespace ContactDynamics
     faces.clear();
     node_faces.clear();
     reference_weight.clear();
+    depth.clear();
 
     std::map<unsigned int, unsigned int> vertex_to_node;
     std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
@@ -64,6 +65,7 @@ namespace ContactDynamics
             for (const unsigned int node : face_nodes)
               node_faces[node].push_back(faces.size());
             faces.push_back(face_nodes);
+            depth.push_back(cell->measure() / cell->face(f)->measure());
           }
 
     reference_weight.assign(reference.size(), 0.);

@@ -116,8 +116,8 @@ namespace ContactDynamics
   namespace
   {
     // the primary face closest to secondary node j at x and the parameter
-    // of the projection on it; `previous`: per node, the face of the last
-    // projection
+    // of the projection on it; `previous`: the face of node j's projection
+    // at the last committed step
     template <int dim, typename PairData>
     unsigned int
     closest_face(const PairData                        &pair,
@@ -125,7 +125,7 @@ namespace ContactDynamics
                  const Vec<double>                     &x,
                  const std::map<unsigned int, Vec<AD>> &xp,
                  const VectorType                      &u,
-                 std::vector<unsigned int>             &previous,
+                 const unsigned int                     previous,
                  double                                &best_eta)
     {
       const auto &s = pair.secondary;
@@ -143,11 +143,13 @@ namespace ContactDynamics
           n_s += SegmentGeometry::face_normal(a, b);
         }
 
-      // A node keeps the face it projected onto in the previous evaluation
+      // A node keeps the face it projected onto at the last committed step
       // while it stays within a small tolerance of that face: at a concave
       // kink of the primary surface two faces are equally close, and
       // switching between them at every Newton iteration (their normals
-      // differ) would stall the iteration.
+      // differ) would stall the iteration. The memory is the committed one
+      // so that a residual depends on the committed and the trial state
+      // only, not on the iterates of earlier (failed) attempts.
       constexpr double tangential_tolerance = 1e-2;
       unsigned int     best                 = ContactSurface<dim>::invalid;
       double           best_distance        = 1e300;
@@ -161,8 +163,7 @@ namespace ContactDynamics
           if (SegmentGeometry::face_normal(y0, y1) * n_s >= 0)
             continue;
           const double eta_free = (x - m) * t / (t * t);
-          if (f == previous[j] &&
-              std::abs(eta_free) <= 1 + tangential_tolerance)
+          if (f == previous && std::abs(eta_free) <= 1 + tangential_tolerance)
             {
               best     = f;
               best_eta = eta_free;
@@ -180,7 +181,6 @@ namespace ContactDynamics
                 std::abs(eta_free) <= 1 + tangential_tolerance ? eta_free : eta;
             }
         }
-      previous[j] = best;
       return best;
     }
 
@@ -247,11 +247,15 @@ namespace ContactDynamics
     const AD lambda_t = variables.multiplier();
 
     // closest point projection
-    auto &previous = last_face[&pair - this->pairs.data()];
+    const std::ptrdiff_t pair_index = &pair - this->pairs.data();
+    auto                &previous   = committed_face[pair_index];
+    auto                &current    = trial_face[pair_index];
     previous.resize(s.n_nodes(), ContactSurface<dim>::invalid);
+    current.resize(s.n_nodes(), ContactSurface<dim>::invalid);
     double             best_eta = 0;
     const unsigned int best =
-      closest_face<dim>(pair, j, value(x), xp, state.u, previous, best_eta);
+      closest_face<dim>(pair, j, value(x), xp, state.u, previous[j], best_eta);
+    current[j] = best;
     if (best == ContactSurface<dim>::invalid)
       return; // no projection: the node is inactive
 
@@ -309,6 +313,16 @@ namespace ContactDynamics
             forces.add_tangential(p.dofs[d][k], -N[1].val() * f_t[k].val());
           }
       }
+  }
+
+  template <int dim>
+  void
+  NodeToSegmentContact<dim>::commit_step(const VectorType &u,
+                                         const VectorType &old_u)
+  {
+    SurfaceContact<dim>::commit_step(u, old_u);
+    // the faces of the converged state's projections (the last assembly)
+    committed_face = trial_face;
   }
 
   template class NodeToSegmentContact<2>;

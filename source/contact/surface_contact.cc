@@ -9,6 +9,7 @@
 #include <contact_dynamics/parameters.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <sstream>
 
@@ -25,6 +26,61 @@ namespace ContactDynamics
       {Stabilization::none, "none"}};
     const Selection<bool> jacobian_names{{true, "exact"},
                                          {false, "approximate"}};
+
+    // 2-D cross product
+    template <int dim>
+    double
+    cross(const Tensor<1, dim> &a, const Tensor<1, dim> &b)
+    {
+      return a[0] * b[1] - a[1] * b[0];
+    }
+
+    // A point moves linearly from x0 to x1 during the step, a face from
+    // (a0, b0) to (a1, b1), all ends linearly. True if the point passes
+    // through the face (not only its line) from the outer side (the side
+    // of the normal, the tangent b - a turned clockwise) to the inner side.
+    template <int dim>
+    bool
+    crosses_face(const Point<dim> &x0,
+                 const Point<dim> &x1,
+                 const Point<dim> &a0,
+                 const Point<dim> &a1,
+                 const Point<dim> &b0,
+                 const Point<dim> &b1)
+    {
+      // h(s) = n(s).(x(s) - a(s)) |t(s)| = cross(r(s), t(s)) is quadratic
+      // in s, with r = x - a, t = b - a
+      const Tensor<1, dim> r0 = x0 - a0, dr = (x1 - a1) - r0;
+      const Tensor<1, dim> t0 = b0 - a0, dt = (b1 - a1) - t0;
+      const double         c0 = cross(r0, t0);
+      const double         c1 = cross(r0, dt) + cross(dr, t0);
+      const double         c2 = cross(dr, dt);
+      if (!(c0 >= 0 && c0 + c1 + c2 < 0))
+        return false;
+      std::vector<double> roots;
+      if (c2 == 0)
+        roots.push_back(-c0 / c1); // c1 != 0: h changes sign
+      else
+        {
+          const double discriminant = c1 * c1 - 4 * c2 * c0;
+          if (discriminant < 0)
+            return false;
+          const double q =
+            -0.5 * (c1 + (c1 >= 0 ? 1. : -1.) * std::sqrt(discriminant));
+          roots.push_back(q / c2);
+          if (q != 0)
+            roots.push_back(c0 / q);
+        }
+      for (const double s : roots)
+        if (s >= 0 && s <= 1)
+          {
+            const Tensor<1, dim> r = r0 + s * dr, t = t0 + s * dt;
+            const double         xi = r * t / (t * t);
+            if (xi >= -1e-10 && xi <= 1 + 1e-10)
+              return true;
+          }
+      return false;
+    }
   } // namespace
 
   void
@@ -214,21 +270,30 @@ namespace ContactDynamics
                                           const VectorType &u,
                                           const double      margin_factor) const
   {
+    // Boxes around the volume each patch and face sweeps in the step (the
+    // union of its boxes at the committed and the trial configuration), so
+    // that a body that crosses several elements in one step is still found.
+    // Points move linearly within the step in this picture, and a node that
+    // passes through a face then lies in both boxes at the crossing.
     std::vector<BoundingBox<dim>> secondary, primary;
     std::vector<unsigned int>     handled;
     for (unsigned int p = 0; p < n_patches(pair); ++p)
       if (pair.handled_patch[p])
         {
-          double size = 0;
-          secondary.push_back(patch_box(pair, p, u, size));
-          secondary.back().extend(margin_factor * size);
+          double           size = 0, committed_size = 0;
+          BoundingBox<dim> box = patch_box(pair, p, u, size);
+          box.merge_with(patch_box(pair, p, committed_u, committed_size));
+          box.extend(margin_factor * std::max(size, committed_size));
+          secondary.push_back(box);
           handled.push_back(p);
         }
     for (unsigned int f = 0; f < pair.primary.n_faces(); ++f)
       {
-        double length = 0;
-        primary.push_back(pair.primary.face_box(f, u, length));
-        primary.back().extend(margin_factor * length);
+        double           length = 0, committed_length = 0;
+        BoundingBox<dim> box = pair.primary.face_box(f, u, length);
+        box.merge_with(pair.primary.face_box(f, committed_u, committed_length));
+        box.extend(margin_factor * std::max(length, committed_length));
+        primary.push_back(box);
       }
     const auto found = find_candidate_pairs(secondary, primary);
     std::vector<std::vector<unsigned int>> result(n_patches(pair));
@@ -243,6 +308,10 @@ namespace ContactDynamics
   {
     if (gap_field.size() != u.size())
       gap_field.reinit(owned_dofs, comm);
+    // before the first commit the committed state is the reference
+    // configuration (as for PairData::position)
+    if (committed_u.size() != u.size())
+      committed_u.reinit(u);
     bool rebuild = false;
     for (auto &pair : pairs)
       {
@@ -661,7 +730,8 @@ namespace ContactDynamics
   SurfaceContact<dim>::commit_step(const VectorType &u, const VectorType &old_u)
   {
     work.commit(u, old_u);
-    gap_field = 0;
+    committed_u = u; // for the swept search of the next step
+    gap_field   = 0;
     for (auto &pair : pairs)
       for (unsigned int j = 0; j < pair.nodes.size(); ++j)
         {
@@ -677,6 +747,105 @@ namespace ContactDynamics
           pair.position[j] = pair.secondary.position(j, u);
         }
     gap_field.compress(VectorOperation::insert);
+  }
+
+  template <int dim>
+  std::string
+  SurfaceContact<dim>::check_step(const VectorType &u) const
+  {
+    // A node that the step's contact conditions did not hold back (see
+    // doc/contact.md, "Search"): (1) not active at the converged state, yet
+    // its straight path relative to a primary face passed through the face
+    // from outside and ends more than `depth` behind it; or (2) projected
+    // with a penetration beyond `own_depth`: a converged gap condition
+    // leaves none, a held node none deeper than half a primary element.
+    std::ostringstream failure;
+    for (unsigned int p = 0; p < pairs.size() && failure.str().empty(); ++p)
+      {
+        const PairData &pair = pairs[p];
+        const auto     &s    = pair.secondary;
+        const auto     &f    = pair.primary;
+        // the primary faces each node's patches found
+        std::vector<std::set<unsigned int>> faces(s.n_nodes());
+        for (unsigned int e = 0; e < n_patches(pair); ++e)
+          if (pair.handled_patch[e])
+            for (const unsigned int j : patch_nodes(pair, e))
+              faces[j].insert(pair.candidates[e].begin(),
+                              pair.candidates[e].end());
+        for (unsigned int j = 0; j < s.n_nodes() && failure.str().empty(); ++j)
+          {
+            const NodeState &node = pair.nodes[j];
+            if (!pair.owned_node[j])
+              continue;
+            const Point<dim> x0    = s.position(j, committed_u);
+            const Point<dim> x1    = s.position(j, u);
+            const auto       where = [&]() -> std::ostream       &{
+              return failure << "contact pair '" << contact.pairs[p].name
+                             << "': the secondary node at (" << x1[0] << ", "
+                             << x1[1] << ") (reference (" << s.reference[j][0]
+                             << ", " << s.reference[j][1] << "), at (" << x0[0]
+                             << ", " << x0[1] << ") at the last step) ";
+            };
+            // a held (persistent) node may sink by dt/2 times the approach
+            // rate it had, but not by half the depth of the primary elements
+            // it faces: deeper, the mesh no longer resolves the contact (a
+            // node may pass a thin body and leave the search's reach)
+            double element_depth = 1e300;
+            for (const unsigned int e : faces[j])
+              element_depth = std::min(element_depth, f.depth[e]);
+            const double own_depth =
+              std::max(complementarity.capture_tolerance,
+                       node.persistent ? 0.5 * element_depth :
+                                         1e-2 * 2 * s.reference_weight[j]);
+            if (node.projected && node.normalized_gap() < -own_depth)
+              {
+                where()
+                  << "penetrates by " << -node.normalized_gap()
+                  << (node.persistent ?
+                        " while held, more than half the depth of the primary "
+                        "elements (" :
+                        " at its first contact, more than a converged "
+                        "gap condition allows (")
+                  << own_depth << ")";
+                break;
+              }
+            if (node.active)
+              continue;
+            for (const unsigned int e : faces[j])
+              {
+                const unsigned int a = f.faces[e][0], b = f.faces[e][1];
+                const Point<dim>   a1 = f.position(a, u), b1 = f.position(b, u);
+                if (!crosses_face(x0,
+                                  x1,
+                                  f.position(a, committed_u),
+                                  a1,
+                                  f.position(b, committed_u),
+                                  b1))
+                  continue;
+                const double length = a1.distance(b1);
+                const double depth =
+                  -cross(x1 - a1, b1 - a1) / std::max(length, 1e-300);
+                if (depth <=
+                    std::max(complementarity.capture_tolerance, 1e-2 * length))
+                  continue;
+                where() << "went through the primary face from (" << a1[0]
+                        << ", " << a1[1] << ") to (" << b1[0] << ", " << b1[1]
+                        << ") in this step and ends " << depth
+                        << " behind it, but its contact condition is not "
+                           "active";
+                break;
+              }
+          }
+      }
+    std::string message = failure.str();
+    if (!message.empty())
+      message += "; the step is rejected and a smaller one tried";
+    // the same decision on every process
+    if (Utilities::MPI::n_mpi_processes(comm) > 1)
+      for (const auto &m : Utilities::MPI::all_gather(comm, message))
+        if (!m.empty())
+          return m;
+    return message;
   }
 
   template <int dim>

@@ -163,6 +163,18 @@ namespace ContactDynamics
     virtual void
     commit_step(const VectorType &u, const VectorType &old_u) = 0;
 
+    /**
+     * Called for a converged step before commit_step(), at the state `u` of
+     * the last assemble(), on every process: a non-empty message (the same
+     * on all processes) rejects the step, and the simulator cuts it.
+     */
+    virtual std::string
+    check_step(const VectorType &u) const
+    {
+      (void)u;
+      return {};
+    }
+
     virtual std::vector<std::string>
     statistics_columns() const = 0;
 

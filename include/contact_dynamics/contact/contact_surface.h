@@ -80,6 +80,9 @@ namespace ContactDynamics
     std::vector<std::array<unsigned int, 2>>          faces; // node indices
     std::vector<std::vector<unsigned int>>            node_faces;
     std::vector<double> reference_weight; // integral N_j
+    // per face: area of its cell / face length (reference), the element's
+    // extent normal to the face
+    std::vector<double> depth;
   };
 } // namespace ContactDynamics
 

@@ -31,6 +31,10 @@ namespace ContactDynamics
     NodeToSegmentContact(const ContactParameters       &contact,
                          const NodeToSegmentParameters &parameters);
 
+    /** Also commits the face memory of the projections. */
+    void
+    commit_step(const VectorType &u, const VectorType &old_u) override;
+
   protected:
     using PairData = typename SurfaceContact<dim>::PairData;
 
@@ -78,8 +82,11 @@ namespace ContactDynamics
 
   private:
     double smoothing_distance;
-    // per pair and secondary node: the primary face of the last projection
-    std::map<std::ptrdiff_t, std::vector<unsigned int>> last_face;
+    // per pair and secondary node: the primary face of the projection at
+    // the last committed step (what the iterations of a step use), and at
+    // the last assembly (committed when the step is accepted)
+    std::map<std::ptrdiff_t, std::vector<unsigned int>> committed_face,
+      trial_face;
   };
 } // namespace ContactDynamics
 

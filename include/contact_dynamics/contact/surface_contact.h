@@ -131,6 +131,13 @@ namespace ContactDynamics
     void
     commit_step(const VectorType &u, const VectorType &old_u) override;
 
+    /**
+     * Rejects a step in which a secondary node went through a primary face
+     * unnoticed: see doc/contact.md, "Search" for the rule.
+     */
+    std::string
+    check_step(const VectorType &u) const override;
+
     std::vector<std::string>
     statistics_columns() const override;
 
@@ -363,6 +370,12 @@ namespace ContactDynamics
                       const VectorType      &u,
                       const LinearSystem    &system);
 
+    /**
+     * Candidate primary faces per patch: boxes around the volume swept in
+     * the step (the union of the boxes at the committed and at the trial
+     * configuration u), enlarged by margin_factor times the patch or face
+     * size.
+     */
     std::vector<std::vector<unsigned int>>
     compute_candidates(const PairData   &pair,
                        const VectorType &u,
@@ -378,6 +391,10 @@ namespace ContactDynamics
 
     MPI_Comm comm = MPI_COMM_WORLD;
     IndexSet owned_dofs;
+
+    // the state of the last committed step (ghosted like the trial state),
+    // for the swept search; zero (the reference configuration) before it
+    VectorType committed_u;
 
     std::vector<types::global_dof_index> normal_multiplier_dofs;
     std::vector<types::global_dof_index> other_multiplier_dofs;
