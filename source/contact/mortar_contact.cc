@@ -300,17 +300,23 @@ namespace ContactDynamics
       return segments;
     }
 
-    // the weighted gaps of the face's two nodes (the contact potential is
-    // sum_j lambda_j g_j)
+    // the weighted gaps and weights of the face's two nodes
+    template <typename Number>
+    struct FaceIntegrals
+    {
+      std::array<Number, 2> gap{{Number(0.), Number(0.)}};
+      std::array<Number, 2> weight{{Number(0.), Number(0.)}};
+    };
+
     template <typename Number, typename PairData>
-    std::array<Number, 2>
+    FaceIntegrals<Number>
     weighted_gaps(const PairData            &pair,
                   const MortarPatch<Number> &m,
                   const Segments<Number>    &segments,
                   const QGauss<1>           &gauss)
     {
       const auto           &p = pair.primary;
-      std::array<Number, 2> gaps{{Number(0.), Number(0.)}};
+      FaceIntegrals<Number> sums;
       for (unsigned int k = 0; k < segments.faces.size(); ++k)
         {
           const unsigned int pf = segments.faces[k];
@@ -322,15 +328,19 @@ namespace ContactDynamics
             {
               const Number xi  = lo + (hi - lo) * gauss.point(q)[0];
               const Number JxW = gauss.weight(q) * (hi - lo) * m.half_length;
+              const auto   N   = SegmentGeometry::shape(xi);
               const auto   psi = MortarGeometry::dual_shape(xi, segments.dual);
               Vec<Number>  normal;
               Number       eta;
               const Number g = point_gap(m, xi, y0, y1, true, normal, eta);
               for (unsigned int i = 0; i < 2; ++i)
-                gaps[i] += psi[i] * g * JxW;
+                {
+                  sums.gap[i] += psi[i] * g * JxW;
+                  sums.weight[i] += N[i] * JxW;
+                }
             }
         }
-      return gaps;
+      return sums;
     }
 
     // the gap, weight, rate and force integrals over the segment [lo, hi]
@@ -476,23 +486,16 @@ namespace ContactDynamics
                         exact,
                         sums);
 
-    // The normal force is -sum_j lambda_j d g_j / d u: the derivative of
-    // the weighted gaps the complementarity condition enforces, so that a
-    // held gap does no work. Its Jacobian needs the second derivatives of
-    // the gaps (or, approximate, the nodal-normal traction's).
-    std::array<AD, 2> gaps = {{sums.gap[0], sums.gap[1]}};
-    if (!exact)
-      {
-        MortarPatch<AD> exact_patch = m;
-        set_face_geometry(s, e, true, exact_patch);
-        gaps = weighted_gaps(
-          pair,
-          exact_patch,
-          mortar_segments(pair, e, exact_patch, true, minimum_covered_fraction),
-          gauss);
-      }
-    const double    lambda[2] = {m.lambda[0].val(), m.lambda[1].val()};
-    std::vector<AD> hessian_rows;
+    // The normal force is -sum_j lambda_j w_j d(g_j / w_j)/du, with this
+    // face's weighted gap g_j and weight w_j of node j: the derivative of
+    // the normalized gaps that the complementarity condition enforces, so
+    // that a held gap does no work (to second order in the difference of
+    // the faces' normalized gaps at a node), and a uniform penetration
+    // does not act on the length of the face. Its Jacobian needs second
+    // derivatives (or, approximate, the nodal-normal traction's).
+    const double lambda[2] = {m.lambda[0].val(), m.lambda[1].val()};
+    // direction[i][j] = w_j d(g_j / w_j)/du_i, with its derivatives
+    std::vector<std::array<AD, 2>> direction(n_positions, {{AD(0.), AD(0.)}});
     if (exact)
       {
         MortarPatch<AD2> m2;
@@ -509,35 +512,64 @@ namespace ContactDynamics
               }
           }
         set_face_geometry(s, e, true, m2);
-        const auto g2 = weighted_gaps(
+        const auto f = weighted_gaps(
           pair,
           m2,
           mortar_segments(pair, e, m2, true, minimum_covered_fraction),
           gauss);
-        const AD2 potential = lambda[0] * g2[0] + lambda[1] * g2[1];
-        hessian_rows.resize(n_positions);
-        for (unsigned int i = 0; i < n_positions; ++i)
-          hessian_rows[i] = potential.size() > 0 ? potential.dx(i) : AD(0.);
+        for (unsigned int j = 0; j < 2; ++j)
+          if (scalar(f.weight[j]) > 0)
+            {
+              const AD2 ratio = f.gap[j] / f.weight[j];
+              for (unsigned int i = 0;
+                   i < n_positions && i < unsigned(ratio.size());
+                   ++i)
+                direction[i][j] = f.weight[j].val() * ratio.dx(i);
+            }
+      }
+    else
+      {
+        MortarPatch<AD> exact_patch = m;
+        set_face_geometry(s, e, true, exact_patch);
+        const auto f = weighted_gaps(
+          pair,
+          exact_patch,
+          mortar_segments(pair, e, exact_patch, true, minimum_covered_fraction),
+          gauss);
+        for (unsigned int j = 0; j < 2; ++j)
+          if (f.weight[j].val() > 0)
+            {
+              const double ratio = f.gap[j].val() / f.weight[j].val();
+              for (unsigned int i = 0; i < n_positions; ++i)
+                direction[i][j] =
+                  AD((f.gap[j].size() > int(i) ? f.gap[j].dx(i) : 0.) -
+                     ratio *
+                       (f.weight[j].size() > int(i) ? f.weight[j].dx(i) : 0.));
+            }
       }
     for (unsigned int i = 0; i < n_positions; ++i)
       {
         typename PatchForces::Derivatives derivatives;
         double                            value = 0;
         for (unsigned int j = 0; j < 2; ++j)
-          if (gaps[j].size() > int(i))
-            {
-              value -= lambda[j] * gaps[j].dx(i);
-              // d / d lambda_j
+          {
+            value -= lambda[j] * direction[i][j].val();
+            // d / d lambda_j
+            if (direction[i][j].val() != 0)
               derivatives.emplace_back(unknowns[n_positions + j],
-                                       -gaps[j].dx(i));
-            }
+                                       -direction[i][j].val());
+          }
         if (exact)
           {
-            const AD &h = hessian_rows[i];
-            for (unsigned int l = 0; l < n_positions && l < unsigned(h.size());
-                 ++l)
-              if (h.dx(l) != 0)
-                derivatives.emplace_back(unknowns[l], -h.dx(l));
+            for (unsigned int l = 0; l < n_positions; ++l)
+              {
+                double h = 0;
+                for (unsigned int j = 0; j < 2; ++j)
+                  if (direction[i][j].size() > int(l))
+                    h += lambda[j] * direction[i][j].dx(l);
+                if (h != 0)
+                  derivatives.emplace_back(unknowns[l], -h);
+              }
           }
         else
           {
