@@ -60,7 +60,9 @@ namespace
         "Dirichlet",
         "substrate_bottom: xy: 0; tool_top: x: t; tool_top: y: "
         "if(t <= 0.4, -t/2, -0.2)");
-    set("Output", "Output directory", "output_" + stabilization);
+    std::string directory = "output_" + stabilization;
+    std::replace(directory.begin(), directory.end(), ' ', '_');
+    set("Output", "Output directory", directory);
     set("Output", "VTU interval", "0");
     set("Contact/Mortar", "Stabilization", stabilization);
     std::ostringstream            screen;
@@ -106,8 +108,7 @@ namespace
     outcome.sliding_work =
       contact_statistics(*simulator.get_contact()).at("contact_work") -
       work_at_sliding;
-    const auto columns =
-      read_csv_columns("output_" + stabilization + "/statistics.csv");
+    const auto columns    = read_csv_columns(directory + "/statistics.csv");
     outcome.external_work = columns.at("external_work").back();
     outcome.newton        = columns.at("cumulative_newton_iterations").back();
 
