@@ -470,19 +470,35 @@ namespace ContactDynamics
       integrator.is_dynamic() ? contact->velocity_update_request() : 0.;
     if (work == 0)
       return 0;
-    // one factor for the velocities of every free degree of freedom:
-    // (1 + s)^2 k = k - work, the smaller correction of the two roots (if
-    // the step created more than all the kinetic energy, all of it goes)
-    const double kinetic =
-      mechanics->kinetic_energy(ghosted(v_new, scratch_ghost[0]));
-    if (!(kinetic > 0))
+    // one factor 1 + s for the velocities w of every free degree of
+    // freedom (the prescribed ones keep theirs):
+    // K(v + s w) = K(v) + s b + s^2 K(w) = K(v) - work, the smaller root
+    // (the largest removal if the step created more than w can carry)
+    VectorType direction(v_new);
+    for (const auto i : direction.locally_owned_elements())
+      if (increment_constraints.is_constrained(i))
+        direction(i) = 0;
+    direction.compress(VectorOperation::insert);
+    const double k_w =
+      mechanics->kinetic_energy(ghosted(direction, scratch_ghost[0]));
+    if (!(k_w > 0))
       return 0;
-    const double s = std::sqrt(std::max(0., 1. - work / kinetic)) - 1.;
-    for (const auto i : v_new.locally_owned_elements())
-      if (!increment_constraints.is_constrained(i))
-        v_new(i) *= 1. + s;
-    v_new.compress(VectorOperation::insert);
-    const double change = kinetic * ((1. + s) * (1. + s) - 1.);
+    VectorType sum(v_new);
+    sum += direction;
+    const double k_v =
+      mechanics->kinetic_energy(ghosted(v_new, scratch_ghost[0]));
+    const double b =
+      mechanics->kinetic_energy(ghosted(sum, scratch_ghost[0])) - k_v - k_w;
+    const double discriminant = b * b - 4 * k_w * work;
+    double       s            = -b / (2 * k_w);
+    if (discriminant >= 0)
+      {
+        const double root = std::sqrt(discriminant);
+        const double s1 = (-b + root) / (2 * k_w), s2 = (-b - root) / (2 * k_w);
+        s = std::abs(s1) < std::abs(s2) ? s1 : s2;
+      }
+    v_new.add(s, direction);
+    const double change = k_w * s * s + b * s;
     contact->add_velocity_update_work(change);
     return change;
   }

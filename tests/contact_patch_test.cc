@@ -29,7 +29,7 @@ namespace
   {
     ParameterHandler prm;
     read_test_parameters("patch.prm",
-                         R"(
+                         std::string(R"(
 subsection Scene
   set Scene = patch test
 end
@@ -42,7 +42,7 @@ subsection Body lower
   set Poisson's ratio = 0
 end
 subsection Boundary conditions
-  set Dirichlet = lower_bottom: xy: 0; upper_top: y: -1e-3*t)" +
+  set Dirichlet = lower_bottom: xy: 0; upper_top: y: -1e-3*t)") +
                            (formulation == "mortar" ? "; upper_left: x: 0" :
                                                       "") +
                            R"(

@@ -18,7 +18,7 @@ main()
     // with persistency, at 0.4 elements per step, a node captured and
     // released within two steps creates up to lambda w (its opening) / 2:
     // measured 0.8 % of the energy for one step (doc/contact.md); the
-    // velocity update returns it, to round-off
+    // velocity update returns it
     {"sliding across 58 elements",
                 ironing,
                 {coarse,
@@ -29,6 +29,10 @@ main()
                 1.4,
                 "Minimum time step",
                 1e-2},
+    // the velocity update returns the contact work; with Rayleigh damping
+    // the damping force of the corrected velocities is not in the committed
+    // acceleration, which leaves 8e-4 of the energy (measured) in the
+    // balance
     {"sliding across 58 elements, velocity update",
                 ironing,
                 {coarse,
@@ -37,7 +41,9 @@ main()
                   "substrate_bottom: xy: 0; tool_top: x: 5*t; tool_top: y: "
                              "if(t <= 0.4, -t/2, -0.2)"},
                  {"Contact/Mortar/Stabilization", "velocity update"}},
-                1.4},
+                1.4,
+                "Minimum time step",
+                2e-3},
     // the tool's lowest point exactly on the substrate (from the start),
     // sliding
     {"grazing contact",

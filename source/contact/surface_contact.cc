@@ -115,10 +115,12 @@ namespace ContactDynamics
       "constant to solver tolerance and contact does no work. 'velocity "
       "persistency': the paper's velocity-level condition -int psi (v_s - "
       "v_p).n = 0, exact on flat surfaces only (drift on curved sliding "
-      "ones). 'velocity update': the gap is enforced at every step, then "
-      "the velocities of the bodies in contact are corrected so that "
-      "frictionless contact does no work (Laursen and Love 2002). 'none': "
-      "the gap is enforced at every step ('static').");
+      "ones). 'velocity update': as 'persistency', then after each step "
+      "one factor on the velocities of all free degrees of freedom returns "
+      "the step's normal contact work to kinetic energy, so frictionless "
+      "contact keeps the energy exactly (in the spirit of Laursen and Love "
+      "2002; it acts on every moving body). 'none': the gap is enforced at "
+      "every step ('static').");
     prm.declare_entry("Capture tolerance",
                       default_text(defaults.capture_tolerance),
                       Patterns::Double(0),
