@@ -605,6 +605,8 @@ namespace ContactDynamics
       u_new.compress(VectorOperation::insert);
     }
 
+    if (contact)
+      contact->start_step();
     NewtonSolver::Result result;
     {
       TimerOutput::Scope t(timer, "Newton solve");

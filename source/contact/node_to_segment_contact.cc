@@ -117,7 +117,7 @@ namespace ContactDynamics
   {
     // the primary face closest to secondary node j at x and the parameter
     // of the projection on it; `previous`: the face of node j's projection
-    // at the last committed step
+    // in the previous iteration of this attempt
     template <int dim, typename PairData>
     unsigned int
     closest_face(const PairData                        &pair,
@@ -143,13 +143,13 @@ namespace ContactDynamics
           n_s += SegmentGeometry::face_normal(a, b);
         }
 
-      // A node keeps the face it projected onto at the last committed step
+      // A node keeps the face it projected onto in the previous iteration
       // while it stays within a small tolerance of that face: at a concave
       // kink of the primary surface two faces are equally close, and
       // switching between them at every Newton iteration (their normals
-      // differ) would stall the iteration. The memory is the committed one
-      // so that a residual depends on the committed and the trial state
-      // only, not on the iterates of earlier (failed) attempts.
+      // differ) would stall the iteration. The memory starts from the
+      // committed one at every attempt, so that nothing of a failed attempt
+      // carries over.
       constexpr double tangential_tolerance = 1e-2;
       unsigned int     best                 = ContactSurface<dim>::invalid;
       double           best_distance        = 1e300;
@@ -248,13 +248,11 @@ namespace ContactDynamics
 
     // closest point projection
     const std::ptrdiff_t pair_index = &pair - this->pairs.data();
-    auto                &previous   = committed_face[pair_index];
     auto                &current    = trial_face[pair_index];
-    previous.resize(s.n_nodes(), ContactSurface<dim>::invalid);
     current.resize(s.n_nodes(), ContactSurface<dim>::invalid);
     double             best_eta = 0;
     const unsigned int best =
-      closest_face<dim>(pair, j, value(x), xp, state.u, previous[j], best_eta);
+      closest_face<dim>(pair, j, value(x), xp, state.u, current[j], best_eta);
     current[j] = best;
     if (best == ContactSurface<dim>::invalid)
       return; // no projection: the node is inactive
@@ -313,6 +311,13 @@ namespace ContactDynamics
             forces.add_tangential(p.dofs[d][k], -N[1].val() * f_t[k].val());
           }
       }
+  }
+
+  template <int dim>
+  void
+  NodeToSegmentContact<dim>::start_step()
+  {
+    trial_face = committed_face;
   }
 
   template <int dim>

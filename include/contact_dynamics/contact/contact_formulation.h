@@ -157,6 +157,14 @@ namespace ContactDynamics
     multiplier_dofs() const = 0;
 
     /**
+     * An attempt at a step starts (again, after a failed one): state that
+     * the iterations of an attempt carry goes back to the committed one.
+     */
+    virtual void
+    start_step()
+    {}
+
+    /**
      * The step converged at the state `u` of the last assemble(): keep the
      * history the next step needs; `old_u` is the state before.
      */

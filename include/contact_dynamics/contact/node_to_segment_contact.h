@@ -31,6 +31,10 @@ namespace ContactDynamics
     NodeToSegmentContact(const ContactParameters       &contact,
                          const NodeToSegmentParameters &parameters);
 
+    /** The face memory of the projections starts from the committed one. */
+    void
+    start_step() override;
+
     /** Also commits the face memory of the projections. */
     void
     commit_step(const VectorType &u, const VectorType &old_u) override;
@@ -83,8 +87,9 @@ namespace ContactDynamics
   private:
     double smoothing_distance;
     // per pair and secondary node: the primary face of the projection at
-    // the last committed step (what the iterations of a step use), and at
-    // the last assembly (committed when the step is accepted)
+    // the last committed step, and at the last assembly of this attempt
+    // (what the next iteration keeps; reset to the committed faces when an
+    // attempt starts, committed when the step is accepted)
     std::map<std::ptrdiff_t, std::vector<unsigned int>> committed_face,
       trial_face;
   };
