@@ -811,7 +811,10 @@ namespace ContactDynamics
                   << own_depth << ")";
                 break;
               }
-            if (node.active)
+            // (a node held in this step enforces its gap rate: it may end
+            // inactive behind a face while it separates, within the depth
+            // above)
+            if (node.active || node.persistent)
               continue;
             for (const unsigned int e : faces[j])
               {
