@@ -466,6 +466,7 @@ namespace ContactDynamics
         const bool normalize = complementarity.normalize_c_n;
         const bool held      = node.persistent && state.dynamic;
         const auto rates     = complementarity.stabilization;
+        node.velocity_rate   = pair.gap_rate[j].value / node.weight;
         if (held && rates != Stabilization::velocity_persistency)
           constraint = held_gap_rate(pair, j, state);
         else
@@ -484,8 +485,7 @@ namespace ContactDynamics
               for (const auto &d : pair.weight[j].derivatives)
                 constraint.derivatives[d.first] -=
                   factor * g.value * d.second / (w * w);
-            // a node not held starts holding with its velocity-level rate
-            node.gap_rate         = pair.gap_rate[j].value / node.weight;
+            node.gap_rate         = node.velocity_rate;
             node.gap_acceleration = 0;
           }
         active = (lambda - constraint.value > 0);
@@ -738,12 +738,20 @@ namespace ContactDynamics
       for (unsigned int j = 0; j < pair.nodes.size(); ++j)
         {
           NodeState &node = pair.nodes[j];
+          // a node held in contact through the step carries the Newmark
+          // rates of its gap (zero); any other starts holding with the rate
+          // of its velocities: the Newmark recursion of a gap that moves
+          // freely (over the kinks of sliding faces) rings from step to step
+          const bool held_in_contact = node.persistent && node.active;
+          node.held_gap              = node.normalized_gap();
+          node.held_rate             = !node.projected ? 0. :
+                                       held_in_contact ? node.gap_rate :
+                                                         node.velocity_rate;
+          node.held_acceleration =
+            node.projected && held_in_contact ? node.gap_acceleration : 0.;
           node.persistent =
             complementarity.holds_contact() && node.projected &&
             node.normalized_gap() <= complementarity.capture_tolerance;
-          node.held_gap          = node.normalized_gap();
-          node.held_rate         = node.projected ? node.gap_rate : 0.;
-          node.held_acceleration = node.projected ? node.gap_acceleration : 0.;
           if (pair.owned_node[j])
             gap_field(pair.secondary.dofs[j][dim]) = node.normalized_gap();
           pair.position[j] = pair.secondary.position(j, u);

@@ -80,6 +80,8 @@ namespace ContactDynamics
     // the normalized gap's Newmark rate and second rate at this state, and
     // the normalized gap with its rates at the last committed step
     double gap_rate = 0, gap_acceleration = 0;
+    // the velocity-level rate -int psi (v_s - v_p).n / w at this state
+    double velocity_rate = 0;
     double held_gap = 0, held_rate = 0, held_acceleration = 0;
 
     /** The gap in length units. */
