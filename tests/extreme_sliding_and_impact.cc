@@ -25,7 +25,8 @@ main()
                  {"Body tool/Initial velocity", "5; -0.5"},
                  {"Boundary conditions/Dirichlet",
                   "substrate_bottom: xy: 0; tool_top: x: 5*t; tool_top: y: "
-                             "if(t <= 0.4, -t/2, -0.2)"}},
+                             "if(t <= 0.4, -t/2, -0.2)"},
+                 {"Contact/Mortar/Stabilization", "persistency"}},
                 1.4,
                 "Minimum time step",
                 1e-2},
