@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Ironing (prm/ironing/mortar.prm, frictionless, 6 s) with the four mortar
-# stabilizations (persistency, velocity persistency, velocity update, none),
+# stabilizations (persistency, velocity persistency, velocity update, none)
+# and persistency with a dissipative Newmark scheme (gamma = 0.55),
 # then the figures (doc/figures/stabilization/*.png), the table
 # (doc/stabilization-tables.md) and benchmarks/results/stabilization_study.csv.
 #
