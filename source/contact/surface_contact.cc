@@ -112,15 +112,19 @@ namespace ContactDynamics
       "gdot_{n+1} = gamma/(beta dt) (g_{n+1} - g_n) + (terms of step n), "
       "with g the gap of the whole discretization (moving segments, "
       "rotating normals, changing Jacobians), so a held penetration stays "
-      "constant to solver tolerance and contact does no work. 'velocity "
-      "persistency': the paper's velocity-level condition -int psi (v_s - "
-      "v_p).n = 0, exact on flat surfaces only (drift on curved sliding "
-      "ones). 'velocity update': as 'persistency', then after each step "
-      "one factor on the velocities of all free degrees of freedom returns "
-      "the step's normal contact work to kinetic energy, so frictionless "
-      "contact keeps the energy exactly (in the spirit of Laursen and Love "
-      "2002; it acts on every moving body). 'none': the gap is enforced at "
-      "every step ('static').");
+      "constant to solver tolerance and frictionless contact does no work "
+      "up to the time discretization. In long curved sliding it needs "
+      "Newmark gamma > 1/2 (e.g. 0.55): with the trapezoidal rule the held "
+      "multipliers' step-to-step alternation is undamped and grows. "
+      "'velocity persistency': the paper's velocity-level condition -int "
+      "psi (v_s - v_p).n = 0, exact on flat surfaces only (drift on curved "
+      "sliding ones). 'velocity update': as 'persistency', then after each "
+      "step one factor on the velocities of all free degrees of freedom "
+      "returns the step's normal contact work to kinetic energy, so "
+      "frictionless impacts keep the energy exactly (in the spirit of "
+      "Laursen and Love 2002; it acts on every moving body and stops them "
+      "when they carry less kinetic energy than the work to return). "
+      "'none': the gap is enforced at every step ('static').");
     prm.declare_entry("Capture tolerance",
                       default_text(defaults.capture_tolerance),
                       Patterns::Double(0),
