@@ -2,10 +2,17 @@
 #include <deal.II/base/utilities.h>
 
 #include <contact_dynamics/contact/contact_formulation.h>
+#include <contact_dynamics/contact/contact_surface.h>
 #include <contact_dynamics/contact/mortar_contact.h>
 #include <contact_dynamics/contact/node_to_segment_contact.h>
 #include <contact_dynamics/parameters.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <optional>
+#include <set>
 #include <sstream>
 
 namespace ContactDynamics
@@ -62,7 +69,9 @@ namespace ContactDynamics
                       Patterns::Anything(),
                       "Points 'x, y' separated by ';' (reference "
                       "coordinates); the nearest secondary node of each is "
-                      "written to contact_history.csv at every step.");
+                      "written to contact_history.csv at every step. A "
+                      "point must lie within one element (the longest face "
+                      "at that node) of a secondary node.");
   }
 
   void
@@ -70,6 +79,7 @@ namespace ContactDynamics
                                       const SceneLayout &layout)
   {
     formulation = formulation_names.value(prm.get("Formulation"));
+    body_names  = layout.body_names;
     pairs.clear();
     const auto side = [&](const std::string &text, const std::string &entry) {
       std::vector<types::boundary_id> ids;
@@ -93,6 +103,17 @@ namespace ContactDynamics
                              "' has an empty side."));
       return ids;
     };
+    std::map<types::boundary_id, std::string> surface_name;
+    for (const auto &[name, id] : layout.surfaces)
+      surface_name[id] = name;
+    // the first surface of `a` that is also in `b`, or none
+    const auto common = [](const std::vector<types::boundary_id> &a,
+                           const std::vector<types::boundary_id> &b) {
+      for (const auto id : a)
+        if (std::find(b.begin(), b.end(), id) != b.end())
+          return std::optional<types::boundary_id>(id);
+      return std::optional<types::boundary_id>();
+    };
     for (const auto &entry :
          Utilities::split_string_list(prm.get("Pairs"), ';'))
       {
@@ -104,11 +125,55 @@ namespace ContactDynamics
         pair.secondary = side(entry.substr(0, colon), entry);
         pair.primary   = side(entry.substr(colon + 1), entry);
         pair.name      = entry;
-        for (const auto id : pair.secondary)
-          AssertThrow(std::find(pair.primary.begin(), pair.primary.end(), id) ==
-                        pair.primary.end(),
+        for (const auto *ids : {&pair.secondary, &pair.primary})
+          for (auto id = ids->begin(); id != ids->end(); ++id)
+            AssertThrow(std::find(id + 1, ids->end(), *id) == ids->end(),
+                        ExcMessage("In 'Contact/Pairs', the entry '" + entry +
+                                   "' names the surface '" + surface_name[*id] +
+                                   "' twice on one side."));
+        if (const auto id = common(pair.secondary, pair.primary))
+          AssertThrow(false,
                       ExcMessage("In 'Contact/Pairs', the entry '" + entry +
-                                 "' has a surface on both sides."));
+                                 "' has the surface '" + surface_name[*id] +
+                                 "' on both sides."));
+
+        // the formulations find contact between different bodies only
+        if (!layout.surface_body.empty())
+          for (const auto s : pair.secondary)
+            for (const auto p : pair.primary)
+              {
+                const auto body = layout.surface_body.at(surface_name[s]);
+                AssertThrow(
+                  body != layout.surface_body.at(surface_name[p]),
+                  ExcMessage(
+                    "In 'Contact/Pairs', the entry '" + entry +
+                    "' pairs the surfaces '" + surface_name[s] + "' and '" +
+                    surface_name[p] + "' of the same body '" +
+                    layout.body_names[body] +
+                    "': contact of a body with itself is not supported. "
+                    "Pair surfaces of two different bodies."));
+              }
+
+        // a second pair between the same surfaces (in either role) would
+        // add its contact forces to the first one's
+        for (const ContactPair &other : pairs)
+          {
+            auto a = common(pair.secondary, other.secondary);
+            auto b = common(pair.primary, other.primary);
+            if (!a || !b)
+              {
+                a = common(pair.secondary, other.primary);
+                b = common(pair.primary, other.secondary);
+              }
+            AssertThrow(!a || !b,
+                        ExcMessage(
+                          "In 'Contact/Pairs', the entries '" + other.name +
+                          "' and '" + entry + "' both pair the surfaces '" +
+                          surface_name[*a] + "' and '" + surface_name[*b] +
+                          "': two surfaces may be paired once only (a "
+                          "second pair would count their contact force "
+                          "twice). Remove one of the entries."));
+          }
         pairs.push_back(pair);
       }
     const auto mu =
@@ -205,6 +270,130 @@ namespace ContactDynamics
       }
     return nullptr;
   }
+
+  template <int dim>
+  void
+  check_contact_setup(
+    const ContactParameters                                       &contact,
+    const std::vector<std::array<const ContactSurface<dim> *, 2>> &surfaces,
+    const double              capture_tolerance,
+    const Triangulation<dim> &triangulation)
+  {
+    AssertDimension(surfaces.size(), contact.pairs.size());
+
+    // Gmsh scenes only know the bodies of their surfaces from the mesh
+    // (the built-in ones were checked when the parameters were read).
+    std::map<types::boundary_id, std::set<types::material_id>> bodies_of;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+          bodies_of[face->boundary_id()].insert(cell->material_id());
+    for (const ContactPair &pair : contact.pairs)
+      {
+        std::set<types::material_id> secondary;
+        for (const auto id : pair.secondary)
+          secondary.insert(bodies_of[id].begin(), bodies_of[id].end());
+        for (const auto id : pair.primary)
+          for (const auto body : bodies_of[id])
+            AssertThrow(secondary.count(body) == 0,
+                        ExcMessage(
+                          "In 'Contact/Pairs', both sides of the entry '" +
+                          pair.name + "' are surfaces of the body '" +
+                          (body < contact.body_names.size() ?
+                             contact.body_names[body] :
+                             std::to_string(body)) +
+                          "': contact of a body with itself is not supported. "
+                          "Pair surfaces of two different bodies."));
+      }
+
+    // a node this far from contact would still count as in contact
+    const std::string capture_parameter =
+      std::string("Contact/") +
+      (contact.formulation == ContactParameters::Formulation::mortar ?
+         "Mortar" :
+         "Node to segment") +
+      "/Capture tolerance";
+    double       shortest = std::numeric_limits<double>::max();
+    unsigned int where    = 0;
+    for (unsigned int p = 0; p < surfaces.size(); ++p)
+      for (const ContactSurface<dim> *surface : surfaces[p])
+        for (const auto &face : surface->faces)
+          {
+            const double length =
+              surface->reference[face[0]].distance(surface->reference[face[1]]);
+            if (length < shortest)
+              {
+                shortest = length;
+                where    = p;
+              }
+          }
+    if (!surfaces.empty())
+      {
+        std::ostringstream message;
+        message << capture_parameter << " = " << capture_tolerance
+                << " is more than a tenth of the shortest contact face ("
+                << shortest << ", pair '" << contact.pairs[where].name
+                << "'): nodes that far apart would count as in contact and "
+                   "be held there. Allowed: 0 to "
+                << 0.1 * shortest
+                << " for this mesh; the default 1e-5 suits elements down "
+                   "to 1e-4.";
+        AssertThrow(capture_tolerance <= 0.1 * shortest,
+                    ExcMessage(message.str()));
+      }
+
+    // the output follows the nearest secondary node of a monitored point
+    for (const Point<2> &point : contact.monitored_points)
+      {
+        double       best = std::numeric_limits<double>::max();
+        unsigned int pair = 0, node = 0;
+        for (unsigned int p = 0; p < surfaces.size(); ++p)
+          for (unsigned int j = 0; j < surfaces[p][0]->n_nodes(); ++j)
+            {
+              double d = 0;
+              for (unsigned int k = 0; k < 2; ++k)
+                d += std::pow(surfaces[p][0]->reference[j][k] - point[k], 2);
+              if (d < best)
+                {
+                  best = d;
+                  pair = p;
+                  node = j;
+                }
+            }
+        if (surfaces.empty())
+          break;
+        const ContactSurface<dim> &surface = *surfaces[pair][0];
+        double                     size    = 0;
+        for (const unsigned int f : surface.node_faces[node])
+          size = std::max(size,
+                          surface.reference[surface.faces[f][0]].distance(
+                            surface.reference[surface.faces[f][1]]));
+        std::ostringstream message;
+        const Point<dim>  &X = surface.reference[node];
+        message << "In 'Contact/Monitored points', the point (" << point[0]
+                << ", " << point[1] << ") is " << std::sqrt(best)
+                << " from the nearest secondary contact node, (" << X[0] << ", "
+                << X[1] << ") of the pair '" << contact.pairs[pair].name
+                << "', more than the element size there (" << size
+                << "). A monitored point must lie on a secondary surface, "
+                   "within one element of one of its nodes (reference "
+                   "coordinates).";
+        AssertThrow(std::sqrt(best) <= size, ExcMessage(message.str()));
+      }
+  }
+
+  template void
+  check_contact_setup(
+    const ContactParameters &,
+    const std::vector<std::array<const ContactSurface<2> *, 2>> &,
+    const double,
+    const Triangulation<2> &);
+  template void
+  check_contact_setup(
+    const ContactParameters &,
+    const std::vector<std::array<const ContactSurface<3> *, 2>> &,
+    const double,
+    const Triangulation<3> &);
 
   template std::unique_ptr<ContactFormulation<2>>
   create_contact_formulation<2>(ParameterHandler &, const SceneLayout &);

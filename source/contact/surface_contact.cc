@@ -131,7 +131,8 @@ namespace ContactDynamics
                       "A node whose (normalized) gap, in length units, is at "
                       "most this value at the end of a step counts as in "
                       "contact for the persistency condition of the next "
-                      "step (>= 0).");
+                      "step (>= 0, at most a tenth of the shortest face of "
+                      "the contact surfaces).");
     prm.declare_entry("c_t",
                       default_text(defaults.c_t),
                       Patterns::Double(1e-300),
@@ -230,6 +231,15 @@ namespace ContactDynamics
       }
     normal_multiplier_dofs.assign(secondary_normal.begin(),
                                   secondary_normal.end());
+    {
+      std::vector<std::array<const ContactSurface<dim> *, 2>> surfaces;
+      for (const auto &pair : pairs)
+        surfaces.push_back({{&pair.secondary, &pair.primary}});
+      check_contact_setup(contact,
+                          surfaces,
+                          complementarity.capture_tolerance,
+                          dof_handler.get_triangulation());
+    }
 
     // every other multiplier unknown is held at zero (frictionless)
     other_multiplier_dofs.clear();

@@ -5,8 +5,10 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <contact_dynamics/mechanics/bodies.h>
 #include <contact_dynamics/mechanics/boundary_conditions.h>
 
+#include <cmath>
 #include <sstream>
 
 namespace ContactDynamics
@@ -103,26 +105,24 @@ namespace ContactDynamics
         c.mask = ComponentMask(mask);
         AssertThrow(!expression.empty(), error("has no expression"));
 
+        // evaluated once now: deal.II would compile it at the first step
+        check_expressions({expression},
+                          dim,
+                          true,
+                          "In 'Boundary conditions/Dirichlet', the entry '" +
+                            entry + "'");
+        c.entry      = entry;
+        c.expression = expression;
         std::vector<std::string> expressions(dim, "0");
         for (unsigned int d = 0; d < dim; ++d)
           if (mask[d])
             expressions[d] = expression;
         c.function = std::make_shared<FunctionParser<dim>>(dim);
-        try
-          {
-            c.function->initialize(
-              FunctionParser<dim>::default_variable_names() + ",t",
-              expressions,
-              {{"pi", numbers::PI}},
-              true);
-          }
-        catch (...)
-          {
-            AssertThrow(false,
-                        error(
-                          "has an expression FunctionParser cannot read: '" +
-                          expression + "'"));
-          }
+        c.function->initialize(FunctionParser<dim>::default_variable_names() +
+                                 ",t",
+                               expressions,
+                               {{"pi", numbers::PI}},
+                               true);
         conditions.push_back(c);
       }
   }
@@ -131,6 +131,15 @@ namespace ContactDynamics
   std::map<types::global_dof_index, double>
   DirichletConditions<dim>::values(const DoFHandler<dim> &dof_handler,
                                    const double           time) const
+  {
+    return values(dof_handler, time, "");
+  }
+
+  template <int dim>
+  std::map<types::global_dof_index, double>
+  DirichletConditions<dim>::values(const DoFHandler<dim> &dof_handler,
+                                   const double           time,
+                                   const std::string     &why) const
   {
     std::map<types::global_dof_index, double> result;
     const unsigned int n_components = dof_handler.get_fe().n_components();
@@ -147,6 +156,23 @@ namespace ContactDynamics
                                                  padded,
                                                  these,
                                                  ComponentMask(mask));
+        // a NaN here would only show up later as an inverted element
+        for (const auto &p : these)
+          if (!std::isfinite(p.second))
+            {
+              std::ostringstream message;
+              message << "The prescribed displacement of 'Boundary "
+                         "conditions/Dirichlet', entry '"
+                      << c.entry << "', is "
+                      << (std::isnan(p.second) ? "NaN" :
+                          p.second > 0         ? "+infinity" :
+                                                 "-infinity")
+                      << " on the surface '" << c.surface << "' at t = " << time
+                      << why << ": the expression '" << c.expression
+                      << "' must be finite at every time of the run on "
+                         "every node of the surface.";
+              AssertThrow(false, ExcMessage(message.str()));
+            }
         for (const auto &p : these)
           result[p.first] = p.second;
       }
@@ -162,9 +188,14 @@ namespace ContactDynamics
     std::map<types::global_dof_index, double> &velocity,
     std::map<types::global_dof_index, double> &acceleration) const
   {
-    const auto minus = values(dof_handler, time - h);
+    // central differences reach just outside the run's times
+    std::ostringstream why;
+    why << " (the velocity and acceleration of the prescribed motion at t = "
+        << time << " are taken by central differences with the step " << h
+        << ")";
+    const auto minus = values(dof_handler, time - h, why.str());
     const auto mid   = values(dof_handler, time);
-    const auto plus  = values(dof_handler, time + h);
+    const auto plus  = values(dof_handler, time + h, why.str());
     velocity.clear();
     acceleration.clear();
     for (const auto &p : mid)

@@ -464,8 +464,9 @@ namespace ContactDynamics
           {
             Assert(layout.surfaces.count(surface) == 0,
                    ExcInternalError("Two surfaces of a scene share a name."));
-            const types::boundary_id id = layout.surfaces.size();
-            layout.surfaces[surface]    = id;
+            const types::boundary_id id  = layout.surfaces.size();
+            layout.surfaces[surface]     = id;
+            layout.surface_body[surface] = layout.body_names.size() - 1;
           }
       }
     return layout;

@@ -44,6 +44,7 @@ namespace ContactDynamics
                                "' given as the parameter Scene/Mesh file."));
 
         PhysicalNames names;
+        int           highest = -1; // the highest dimension of a group
         std::string   line;
         while (std::getline(in, line))
           if (Utilities::trim(line) == "$PhysicalNames")
@@ -64,6 +65,7 @@ namespace ContactDynamics
                                line + "'."));
                   const std::string name =
                     line.substr(first + 1, last - first - 1);
+                  highest = std::max(highest, d);
                   if (d == dim)
                     names.bodies[tag] = name;
                   else if (d == dim - 1)
@@ -72,11 +74,26 @@ namespace ContactDynamics
               break;
             }
 
+        // a mesh of the other dimension would otherwise show as a scene
+        // without surfaces (or bodies)
+        AssertThrow(highest <= dim,
+                    ExcMessage(mesh_file_error_prefix(file) + "is a " +
+                               std::to_string(highest) +
+                               "-D mesh (it has physical groups of dimension " +
+                               std::to_string(highest) +
+                               "), but Dimension = " + std::to_string(dim) +
+                               ". Set Dimension = " + std::to_string(highest) +
+                               " (at the top level of the parameter file) or "
+                               "give a " +
+                               std::to_string(dim) + "-D mesh."));
         AssertThrow(
           !names.bodies.empty(),
           ExcMessage(
             mesh_file_error_prefix(file) +
             "has no physical names of dimension " + std::to_string(dim) +
+            (highest == dim - 1 && dim == 3 ?
+               " (the highest is 2: if it is a 2-D mesh, set Dimension = 2)" :
+               "") +
             ". Name the bodies with physical groups of the cells (Physical " +
             (dim == 2 ? "Surface" : "Volume") + " in Gmsh)."));
         return names;

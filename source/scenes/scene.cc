@@ -70,9 +70,11 @@ namespace ContactDynamics
         for (const auto &surface : surfaces)
           known.push_back(surface.first);
         AssertThrow(false,
-                    ExcMessage("Unknown surface '" + name +
-                               "'. The scene has the surfaces: " + join(known) +
-                               "."));
+                    ExcMessage(
+                      "Unknown surface '" + name + "'. " +
+                      (known.empty() ?
+                         "The scene has no named surfaces." :
+                         "The scene has the surfaces: " + join(known) + ".")));
       }
     return it->second;
   }

@@ -16,6 +16,7 @@
 #include <contact_dynamics/mechanics/time_integrator.h>
 #include <contact_dynamics/scenes/scene_layout.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -47,6 +48,7 @@ namespace ContactDynamics
     std::vector<ContactPair> pairs;
     std::vector<Point<2>>    monitored_points;
     bool                     allow_initial_penetration = false;
+    std::vector<std::string> body_names; // of the scene, for messages
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -260,6 +262,26 @@ namespace ContactDynamics
   template <int dim>
   std::unique_ptr<ContactFormulation<dim>>
   create_contact_formulation(ParameterHandler &prm, const SceneLayout &layout);
+
+  template <int dim>
+  class ContactSurface;
+
+  /**
+   * The checks of the Contact parameters that need the mesh, done once the
+   * contact surfaces exist (before the first step): the two sides of every
+   * pair on different bodies, a capture tolerance small against the contact
+   * faces, and every monitored point within an element of a secondary node.
+   * `surfaces` holds the secondary and primary surface of each pair; the
+   * capture tolerance is that of the formulation in use. Throws a message
+   * naming the parameter, the value and what is allowed.
+   */
+  template <int dim>
+  void
+  check_contact_setup(
+    const ContactParameters                                       &contact,
+    const std::vector<std::array<const ContactSurface<dim> *, 2>> &surfaces,
+    const double              capture_tolerance,
+    const Triangulation<dim> &triangulation);
 
   /** Declares the `Contact` subsection with every formulation's entries. */
   void

@@ -40,6 +40,22 @@ namespace ContactDynamics
   split_vector_expression(const std::string &text,
                           const unsigned int dim,
                           const std::string &parameter);
+
+  /**
+   * Parses each expression and evaluates it once at the origin (and t = 0):
+   * deal.II compiles a FunctionParser expression only at its first
+   * evaluation, so a broken one would pass the parameter check and stop the
+   * run later with muparser's words only. The variables are x, y (, z) and,
+   * if `time_dependent`, t. On failure throws a message that starts with
+   * `where` (the parameter and its value) and names the expression and what
+   * is allowed. A value that is not finite is no error here: the origin
+   * need not lie in the body.
+   */
+  void
+  check_expressions(const std::vector<std::string> &expressions,
+                    const unsigned int              dim,
+                    const bool                      time_dependent,
+                    const std::string              &where);
 } // namespace ContactDynamics
 
 #endif

@@ -41,7 +41,8 @@ namespace ContactDynamics
 
     /**
      * Prescribed displacement of every constrained degree of freedom of the
-     * first dim (displacement) components at time t.
+     * first dim (displacement) components at time t. A value that is not
+     * finite throws a message naming the entry, the surface and the time.
      */
     std::map<types::global_dof_index, double>
     values(const DoFHandler<dim> &dof_handler, const double time) const;
@@ -58,8 +59,16 @@ namespace ContactDynamics
           std::map<types::global_dof_index, double> &acceleration) const;
 
   private:
+    /** As values(); `why` adds to the message why the time was asked for. */
+    std::map<types::global_dof_index, double>
+    values(const DoFHandler<dim> &dof_handler,
+           const double           time,
+           const std::string     &why) const;
+
     struct Condition
     {
+      std::string                          entry; // as written
+      std::string                          expression;
       std::string                          surface;
       types::boundary_id                   boundary_id;
       ComponentMask                        mask;

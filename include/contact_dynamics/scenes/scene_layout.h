@@ -22,6 +22,9 @@ namespace ContactDynamics
   {
     std::vector<std::string>                  body_names;
     std::map<std::string, types::boundary_id> surfaces;
+    // The body (material id) of each surface where the scene knows it
+    // without the mesh (the built-in scenes); empty for a Gmsh scene.
+    std::map<std::string, types::material_id> surface_body;
 
     /** Material id of a body; throws a message listing the known bodies. */
     types::material_id
