@@ -15,7 +15,7 @@
 //   0.8); an error that does not vanish with the mesh (a wrong force, a
 //   wrong weight) fails it;
 // - on the finer mesh the half-width and the peak pressure are within
-//   2.5 % of Hertz's and the profile within 3.5 % (measured -1.3 %, +1.5 %,
+//   2.5 % of Hertz's and the profile within 3.5 % (measured -1.24 %, +1.48 %,
 //   2.5 %; about 1 % is the model error of Hertz's formulas for these
 //   finite bodies, a / R = 0.1): a 10 % error in the pressures or the
 //   half-width fails;
