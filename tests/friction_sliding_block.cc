@@ -1,22 +1,42 @@
-// Coulomb friction, quasi-static: the upper block of the patch-test scene
-// (nu = 0, E = 1e6) is pressed onto the lower one (normal force about
-// E delta = 1000 for delta = 1e-3 over the total height 1) and then its top
-// is pulled sideways by u(t), up to 2e-3, well beyond the stick limit
-// (a shear stiffness of at most G = E/2 reaches mu N = 300 at u = 6e-4):
-// - at a small tangential force (T < mu N / 2) the interface sticks: no slip
-//   node, and no relative tangential motion at sticking nodes (the edges of
-//   the interface, where the free sides concentrate the traction, start to
-//   slip before T reaches mu N, as in Cattaneo's problem);
-// - once every node slips, each node's traction obeys Coulomb's law,
-//   |lambda_t| = mu lambda_n, to solver tolerance, and T approaches mu N
-//   (up to the tilt of the deformed normals);
-// - the energy balance with the frictional dissipation counted closes: the
-//   work of the support = stored energy + frictional dissipation.
-// For the mortar and the node-to-segment formulations. Then dynamics: the
-// upper block, pressed by its weight, slides with an initial velocity and is
-// braked by friction; the kinetic energy it loses is the frictional
-// dissipation (the energy balance closes to 1e-3 of it), and its mean
-// deceleration is mu g.
+// Coulomb friction (mu = 0.3), mortar and node-to-segment. What is asserted,
+// and against what (none of it is the Coulomb branch equation that the
+// solver enforces node by node):
+// 1. Quasi-static: the upper block of the patch-test scene (nu = 0,
+//    E = 1e6) is pressed onto the lower one (normal force
+//    E delta = 1000 for delta = 1e-3 over the total height 1) and then its
+//    top is pulled sideways by u(t) = 1e-3 (t - 1), up to 2e-3. In the stick
+//    phase the tangential force grows as 3.1e5 u (measured), so the stick
+//    limit mu N = 300 is near u = 1e-3; gross sliding is t >= 2.5
+//    (u >= 1.5e-3):
+//    - at a small tangential force (T < mu N / 2) the interface sticks: no
+//      slip node (the edges, where the free sides concentrate the traction,
+//      start to slip before T reaches mu N, as in Cattaneo's problem;
+//      first slip node at T = 0.72 mu N);
+//    - in gross sliding every node slips, and the lower block's support,
+//      which carries the friction force through the whole lower block
+//      (equilibrium; reactions from the bulk residual, not from the contact
+//      forces), gives |R_x| / R_y = mu within 2 % (measured -0.22 %, the
+//      tilt of the deformed normals);
+//    - the frictional dissipation over the gross sliding is the friction
+//      force times the slip distance: the blocks' shear is then constant,
+//      so the interface slips at the speed of the pulled top (1e-3), and
+//      D(3) - D(2.5) = mu int R_y du_top within 2 % (measured -0.15 %);
+//    - the energy balance with the frictional dissipation counted closes
+//      (conservation law; 1e-3 of the dissipation).
+// 2. Dynamics: the upper block (rho = 1, weight 5 per unit length) slides
+//    with an initial velocity 0.5 and is braked by friction for 0.1 s:
+//    - its mean deceleration is mu g = 3 (Newton's law with Coulomb's
+//      force mu m g; within 3 %, measured -1.0 %: the normal force starts
+//      at 0 and oscillates about the weight);
+//    - the frictional dissipation equals the time integral of the friction
+//      force mu N times the slip rate, N the normal contact force and the
+//      slip rate the difference of the two sides' mean velocities along
+//      the interface (trapezoidal rule over the steps; within 3 %,
+//      measured +0.43 %);
+//    - the energy balance closes (1e-3 of the dissipation): the kinetic
+//      energy lost is the frictional dissipation.
+// The measured values are in the file "measured" beside "output" and in
+// doc/testing.md.
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
 
@@ -77,69 +97,86 @@ end
     std::ostringstream            screen;
     ContactDynamics::Simulator<2> simulator(prm, screen);
     simulator.initialize();
-    const double mu = 0.3;
-    const auto  *contact =
-      dynamic_cast<const ContactDynamics::SurfaceContact<2> *>(
-        simulator.get_contact());
-    bool   stuck_phase = false, slid_phase = false;
-    double worst_stick_slip = 0, worst_slip_ratio = 0;
-    double worst_force_ratio = 0, onset = -1;
+    const double mu = 0.3, pull_rate = 1e-3, dt = 0.05;
+    bool         stuck_phase = false, all_slip = true;
+    double       onset = -1, worst_ratio = 0, dissipation_start = -1;
+    double       expected_dissipation = 0, previous_Ry = 0;
     while (simulator.current_time() < 3 - 1e-9)
       {
-        if (!simulator.advance(0.05))
+        if (!simulator.advance(dt))
           check_true(formulation + ": step converged", false);
+        const double t     = simulator.current_time();
         const auto   stats = contact_statistics(*simulator.get_contact());
         const double T     = std::abs(stats.at("contact_force_x"));
         const double N     = stats.at("contact_force_y");
-        if (simulator.current_time() > 1 + 1e-9 && T < 0.5 * mu * N)
+        if (t > 1 + 1e-9 && T < 0.5 * mu * N)
           {
             stuck_phase = true;
             if (stats.at("slip_nodes") != 0)
               check_true(formulation + ": no slip node below mu N / 2", false);
           }
-        for (const auto &node : contact->node_states(0))
-          if (node.stick)
-            worst_stick_slip =
-              std::max(worst_stick_slip, std::abs(node.slip_rate) * 0.05);
-        if (stats.at("stick_nodes") == 0 && stats.at("slip_nodes") > 0)
-          {
-            slid_phase = true;
-            worst_force_ratio =
-              std::max(worst_force_ratio, std::abs(T / (mu * N) - 1));
-            for (const auto &node : contact->node_states(0))
-              if (node.active)
-                worst_slip_ratio = std::max(worst_slip_ratio,
-                                            std::abs(std::abs(node.tangential) /
-                                                       (mu * node.pressure) -
-                                                     1));
-          }
         if (stats.at("slip_nodes") > 0 && onset < 0)
           onset = T / (mu * N);
+        // the lower block's support carries the interface forces
+        const auto   R  = simulator.reaction_force("lower_bottom");
+        const double Ry = std::abs(R[1]);
+        if (t > 2.5 - 1e-9)
+          {
+            all_slip = all_slip && stats.at("stick_nodes") == 0 &&
+                       stats.at("slip_nodes") > 0;
+            worst_ratio =
+              std::max(worst_ratio, std::abs(std::abs(R[0]) / (mu * Ry) - 1));
+            if (dissipation_start < 0)
+              dissipation_start = simulator.energy().frictional;
+            else
+              // friction force mu N times the top's displacement in the step
+              expected_dissipation +=
+                mu * 0.5 * (Ry + previous_Ry) * pull_rate * dt;
+          }
+        previous_Ry = Ry;
       }
     deallog << formulation
             << ": first slip node at T / (mu N) = " << std::setprecision(2)
             << onset << std::endl;
-    check_true(formulation + ": a stick phase and a slip phase",
-               stuck_phase && slid_phase);
-    check_close(formulation + ": slip increment of sticking nodes",
-                worst_stick_slip,
+    check_true(formulation + ": a stick phase below mu N / 2", stuck_phase);
+    check_true(formulation + ": every node slips in gross sliding", all_slip);
+    check_range(formulation + ": support |R_x| / (mu R_y) - 1 in gross "
+                              "sliding",
+                worst_ratio,
                 0.,
-                1e-12);
-    check_close(formulation + ": |lambda_t| / (mu lambda_n) - 1 at slipping "
-                              "nodes",
-                worst_slip_ratio,
-                0.,
-                1e-8);
-    check_close(formulation + ": T / (mu N) - 1 while all nodes slip",
-                worst_force_ratio,
-                0.,
-                5e-3);
+                0.02);
     const auto &e = simulator.energy();
-    check_true(formulation + ": friction dissipates", e.frictional > 0);
+    check_range(formulation + ": dissipation / (mu int R_y du_top) - 1",
+                (e.frictional - dissipation_start) / expected_dissipation - 1,
+                -0.02,
+                0.02);
     check_close(formulation + ": energy balance error / dissipation",
                 e.error() / e.frictional,
                 0.,
                 1e-3);
+  }
+
+  // Mean x velocity of the body's boundary faces at reference height y (the
+  // interface), weighted by face length: the slip rate is the difference of
+  // the two sides.
+  double
+  interface_velocity_x(const ContactDynamics::Simulator<2> &simulator,
+                       const unsigned int                   body,
+                       const double                         y)
+  {
+    double sum = 0, length = 0;
+    for (const auto &cell : simulator.get_dof_handler().active_cell_iterators())
+      if (cell->material_id() == body)
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              std::abs(cell->face(f)->center()[1] - y) < 1e-9)
+            for (unsigned int v = 0; v < 2; ++v)
+              {
+                sum += cell->face(f)->measure() / 2 *
+                       simulator.velocity()(cell->face(f)->vertex_dof_index(v, 0));
+                length += cell->face(f)->measure() / 2;
+              }
+    return sum / length;
   }
 } // namespace
 
@@ -196,19 +233,37 @@ end
   std::ostringstream            screen;
   ContactDynamics::Simulator<2> simulator(prm, screen);
   simulator.initialize();
+  // mu N times the slip rate (upper minus lower mean velocity), trapezoidal
+  const double mu = 0.3, g = 10, v0 = 0.5, dt = 0.005;
+  double       friction_power = 0, integral = 0;
   for (unsigned int n = 0; n < 20; ++n)
-    if (!simulator.advance(0.005))
-      check_true(formulation + " braking: step converged", false);
-  const auto &e = simulator.energy();
+    {
+      if (!simulator.advance(dt))
+        check_true(formulation + " braking: step converged", false);
+      const double N = contact_statistics(*simulator.get_contact())
+                         .at("contact_force_y");
+      const double power =
+        mu * std::abs(N) *
+        std::abs(interface_velocity_x(simulator, 0, 0.5) -
+                 interface_velocity_x(simulator, 1, 0.5));
+      integral += 0.5 * (friction_power + power) * dt;
+      friction_power = power;
+    }
+  const double t = 20 * dt;
+  const auto  &e = simulator.energy();
   check_true(formulation + " braking: friction dissipates", e.frictional > 0);
   check_close(formulation + " braking: energy balance error / dissipation",
               e.error() / e.frictional,
               0.,
               1e-3);
-  check_close(formulation + " braking: deceleration / (mu g)",
-              (0.5 - mean_velocity_x(simulator, 0)) / 0.1 / 3.,
-              1.,
-              0.05);
+  check_range(formulation + " braking: deceleration / (mu g) - 1",
+              (v0 - mean_velocity_x(simulator, 0)) / t / (mu * g) - 1,
+              -0.03,
+              0.03);
+  check_range(formulation + " braking: dissipation / int mu N v_slip dt - 1",
+              e.frictional / integral - 1,
+              -0.03,
+              0.03);
 }
 
 int

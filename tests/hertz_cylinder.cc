@@ -1,14 +1,32 @@
 // Hertz contact of a cylinder on a half-space (plane strain), frictionless,
 // quasi-static, linear elastic, equal materials (E = 1000, nu = 0.3), the
-// flat face of the half-cylinder (R = 1) pushed down by 0.02. From the
-// measured load P per unit length: E* = E / (2 (1 - nu^2)),
+// flat face of the half-cylinder (R = 1) pushed down by 0.02 in one load
+// step (frictionless: the same state as in four steps). Reference:
+// Hertz's solution for the measured load P per unit length (analytic;
+// ../shared/reference/benchmarks.md section 3): E* = E / (2 (1 - nu^2)),
 // a = sqrt(4 P R / (pi E*)), p0 = 2 P / (pi a), p(x) = p0 sqrt(1 - x^2/a^2).
 // The half-width is measured from the second moment of the nodal pressures
 // (a^2 = 4 int p x^2 / int p for the Hertz profile), with the nodal weights
-// integral(N_j) of the current configuration. Checked at two mesh
-// refinements: within a few percent, and the errors decrease; and the
-// node-to-segment formulation (nodal pressure = nodal force / tributary
-// length) on the finer mesh.
+// integral(N_j) of the current configuration. What is asserted:
+// - convergence: mortar on two meshes (refinement factor 1 and 2: 4.3 and
+//   8.7 elements per contact half-width); the L2 error of the pressure
+//   profile falls by at least a factor 1.4 (an order of at least 1/2, what
+//   the square-root edge of the Hertz pressure allows; measured 1.76, order
+//   0.8); an error that does not vanish with the mesh (a wrong force, a
+//   wrong weight) fails it;
+// - on the finer mesh the half-width and the peak pressure are within
+//   2.5 % of Hertz's and the profile within 3.5 % (measured -1.24 %, +1.48 %,
+//   2.5 %; about 1 % is the model error of Hertz's formulas for these
+//   finite bodies, a / R = 0.1): a 10 % error in the pressures or the
+//   half-width fails;
+// - the nodal forces add up to the load P (0.5 %; equilibrium);
+// - the node-to-segment formulation (nodal pressure = nodal force /
+//   tributary length) on the coarser mesh agrees with mortar on the same
+//   mesh: profile error within 1 percentage point and half-width within
+//   0.5 point of mortar's (an independent discretization; measured
+//   4.67 % against 4.43 %, -0.09 % against -0.07 %), peak within 2.5 %.
+// The measured values are in the file "measured" beside "output" and in
+// doc/testing.md.
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
 
@@ -50,7 +68,7 @@ subsection Boundary conditions
 end
 subsection Time integration
   set Scheme = quasi-static
-  set Time step = 0.25
+  set Time step = 1
   set End time = 1
 end
 subsection Nonlinear solver
@@ -126,13 +144,12 @@ end
         num += w * std::pow(nodes[j].pressure - exact, 2);
         den += w * exact * exact;
       }
-    deallog << std::setprecision(3) << formulation << ", factor " << factor
-            << ": P = " << P << ", a = " << a << ", p0 = " << p0 << std::endl;
-    check_close(formulation + ", factor " + std::to_string(factor) +
-                  ": sum of nodal forces / P",
-                m0 / P,
-                1.,
-                5e-3);
+    const std::string name =
+      formulation + ", factor " + Utilities::to_string(factor);
+    record_measured(name + ": P", P, 0, 0);
+    record_measured(name + ": Hertz a", a, 0, 0);
+    record_measured(name + ": Hertz p0", p0, 0, 0);
+    check_range(name + ": sum of nodal forces / P - 1", m0 / P - 1, -5e-3, 5e-3);
     return {a_h / a - 1, peak / p0 - 1, std::sqrt(num / den)};
   }
 } // namespace
@@ -141,39 +158,31 @@ int
 main()
 {
   initlog();
-  const Errors coarse = run(0.5);
-  const Errors fine   = run(1);
-  for (const auto &e :
-       {std::make_pair("coarse", coarse), std::make_pair("fine", fine)})
+  const Errors coarse = run(1);
+  const Errors fine   = run(2);
+  const Errors nts    = run(1, "nts");
+  for (const auto &e : {std::make_pair(std::string("mortar, factor 1"), coarse),
+                        std::make_pair(std::string("mortar, factor 2"), fine),
+                        std::make_pair(std::string("nts, factor 1"), nts)})
     {
-      check_close(std::string(e.first) + ": half-width error within 5 %",
-                  e.second.half_width,
-                  0.,
-                  0.05);
-      check_close(std::string(e.first) + ": peak pressure error within 3 %",
-                  e.second.peak,
-                  0.,
-                  0.03);
-      check_close(std::string(e.first) + ": profile L2 error within 6 %",
-                  e.second.profile,
-                  0.,
-                  0.06);
+      record_measured(e.first + ": half-width error", e.second.half_width, 0, 0);
+      record_measured(e.first + ": peak pressure error", e.second.peak, 0, 0);
+      record_measured(e.first + ": profile L2 error", e.second.profile, 0, 0);
     }
-  check_true("half-width error decreases with refinement",
-             std::abs(fine.half_width) < std::abs(coarse.half_width));
-  check_true("profile error decreases with refinement",
-             fine.profile < coarse.profile);
-  const Errors nts = run(1, "nts");
-  check_close("nts: half-width error within 5 %", nts.half_width, 0., 0.05);
-  check_close("nts: peak pressure error within 3 %", nts.peak, 0., 0.03);
-  check_close("nts: profile L2 error within 6 %", nts.profile, 0., 0.06);
-  deallog << std::setprecision(2)
-          << "nts errors (half-width, peak, profile): " << 100 * nts.half_width
-          << "% " << 100 * nts.peak << "% " << 100 * nts.profile << "%"
-          << std::endl;
-  deallog << std::setprecision(2) << "errors (half-width, peak, profile): "
-          << "coarse " << 100 * coarse.half_width << "% " << 100 * coarse.peak
-          << "% " << 100 * coarse.profile << "%, fine " << 100 * fine.half_width
-          << "% " << 100 * fine.peak << "% " << 100 * fine.profile << "%"
-          << std::endl;
+  check_range("mortar: profile L2 error, factor 1 / factor 2",
+              coarse.profile / fine.profile,
+              1.4,
+              1e9);
+  check_range("mortar, factor 2: half-width error", fine.half_width, -0.025, 0.025);
+  check_range("mortar, factor 2: peak pressure error", fine.peak, -0.025, 0.025);
+  check_range("mortar, factor 2: profile L2 error", fine.profile, 0., 0.035);
+  check_range("nts - mortar, factor 1: profile L2 error",
+              nts.profile - coarse.profile,
+              -0.01,
+              0.01);
+  check_range("nts - mortar, factor 1: half-width error",
+              nts.half_width - coarse.half_width,
+              -0.005,
+              0.005);
+  check_range("nts, factor 1: peak pressure error", nts.peak, -0.025, 0.025);
 }

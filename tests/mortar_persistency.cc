@@ -1,11 +1,23 @@
 // Persistency stabilization in the bouncing block and in sliding contact.
-// 1. The paper's bouncing block with stabilized mortar, first 0.5 s: first
-//    contact near t = 0.2 s (the paper: 0.2 s; the driven top closes the
-//    gap of 0.01 at t = (2/pi) acos(1 - 0.05) = 0.2 s); once a node is held
-//    by the persistency condition its weighted gap stays constant (to
-//    1e-9 per step), and the penetration stays below
-//    dt * (impact speed); the contact does no positive work, and the energy
-//    balance closes once the contact work is counted.
+// 1. The paper's bouncing block with stabilized mortar (linear elastic
+//    bodies), first 0.5 s. What is asserted, and against what:
+//    - first contact in [t_kin, t_kin + L/c + dt] (kinematics: the driven
+//      top closes the gap of 0.01 at t_kin = (2/pi) acos(0.95) = 0.202 s,
+//      the bottom follows within a wave transit L/c = 0.088 s; detected
+//      at 0.225 s, a step's margin on both sides);
+//    - contact is detected in the step that closes the gap: at the step
+//      before, every node is open, by between 0.1 and 1 times the distance
+//      v dt the block approaches in a step (v the top's speed at contact;
+//      measured 0.60);
+//    - the impact step closes the gap exactly (penetration below 1e-6 v dt;
+//      measured 7e-13), and no node penetrates by more than dt/2 times the
+//      approach speed afterwards (the persistency condition holds the gap
+//      rate the impact step left, for half a step; measured 0.41 of the
+//      bound);
+//    - once a node is held by the persistency condition its weighted gap
+//      stays constant (to 1e-9 per step);
+//    - the contact does no positive work, and the energy balance closes
+//      once the contact work is counted (conservation law, 1e-9).
 // 2. A block pressed on another (in 0.1 s) and then sliding at speed 0.2
 //    across the non-matching interface (by 0.1, half a lower element per
 //    0.5): nodes held by the persistency condition keep their gap (to
@@ -52,8 +64,10 @@ namespace
     ContactDynamics::Simulator<2> simulator(prm, screen);
     simulator.initialize();
 
-    const double dt = 0.025;
+    const double dt = 0.025, t_kin = 2 / M_PI * std::acos(0.95),
+                 transit = 1 / std::sqrt(1e6 / 7750);
     double       first_contact = -1, worst_drift = 0, worst_penetration = 0;
+    double       gap_before = 1, gap_now = 1, first_penetration = 0;
     std::vector<double> previous(mortar_of(simulator).node_states(0).size(), 0);
     // held during a step: persistent flag after the previous commit
     std::vector<bool> held(previous.size(), false), held_before(held);
@@ -61,12 +75,15 @@ namespace
       {
         if (!simulator.advance(dt))
           check_true("step converged", false);
-        const auto &nodes = mortar_of(simulator).node_states(0);
+        const auto &nodes      = mortar_of(simulator).node_states(0);
+        bool        any_active = false;
+        double      smallest   = 1;
         for (unsigned int j = 0; j < nodes.size(); ++j)
           {
             const double gap = nodes[j].normalized_gap();
-            if (nodes[j].active && first_contact < 0)
-              first_contact = simulator.current_time();
+            any_active       = any_active || nodes[j].active;
+            if (nodes[j].projected)
+              smallest = std::min(smallest, gap);
             // held by the velocity condition in this and the last step (the
             // first held step still moves by dt/2 times the gap rate that the
             // impact step left)
@@ -78,12 +95,35 @@ namespace
             held_before[j] = held[j];
             held[j]        = nodes[j].persistent;
           }
+        if (any_active && first_contact < 0)
+          {
+            first_contact = simulator.current_time();
+            gap_before    = gap_now;
+            for (const auto &node : nodes)
+              if (node.active)
+                first_penetration =
+                  std::max(first_penetration, -node.normalized_gap());
+          }
+        gap_now = smallest;
       }
-    const double impact_speed = 0.2 * M_PI / 2 * std::sin(M_PI / 2 * 0.2);
-    check_close("first contact time", first_contact, 0.2, dt);
+    // the speed of the driven top when contact starts (the approach speed)
+    const double impact_speed =
+      0.2 * M_PI / 2 * std::sin(M_PI / 2 * first_contact);
+    check_true("first contact in [t_kin, t_kin + L/c + dt]",
+               first_contact >= t_kin && first_contact <= t_kin + transit + dt);
+    check_range("smallest gap the step before contact / (v dt)",
+                gap_before / (impact_speed * dt),
+                0.1,
+                1.);
+    check_range("penetration at the first contact step / (v dt)",
+                first_penetration / (impact_speed * dt),
+                -1e-6,
+                1e-6);
+    check_range("largest penetration / (v dt / 2)",
+                worst_penetration / (impact_speed * dt / 2),
+                0.,
+                1.);
     check_true("held gaps constant to 1e-9 per step", worst_drift < 1e-9);
-    check_true("penetration below dt * impact speed",
-               worst_penetration < dt * impact_speed);
     const auto   stats = contact_statistics(*simulator.get_contact());
     const auto  &e     = simulator.energy();
     const double scale = e.kinetic + e.elastic;

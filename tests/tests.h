@@ -52,6 +52,41 @@ check_true(const std::string &name, const bool condition)
 }
 
 
+// A measured value beside the checks: appended to the file "measured" next
+// to "output" (the harness does not compare it), so that the margin of
+// every tolerance can be read after a run (doc/testing.md quotes them).
+inline void
+record_measured(const std::string &name,
+                const double       value,
+                const double       low,
+                const double       high)
+{
+  static std::ofstream file(
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ?
+      "measured" :
+      "/dev/null");
+  file << std::setprecision(6) << name << ": " << value << " in [" << low
+       << ", " << high << "]" << std::endl;
+}
+
+// Prints "name: OK" if low <= value <= high, and the numbers otherwise;
+// the value is recorded in the file "measured" either way.
+inline void
+check_range(const std::string &name,
+            const double       value,
+            const double       low,
+            const double       high)
+{
+  record_measured(name, value, low, high);
+  if (value >= low && value <= high)
+    dealii::deallog << name << ": OK" << std::endl;
+  else
+    dealii::deallog << name << ": FAILED value=" << std::setprecision(12)
+                    << value << " range=[" << low << ", " << high << "]"
+                    << std::endl;
+}
+
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
