@@ -974,7 +974,8 @@ namespace ContactDynamics
       return "";
     std::ostringstream message;
     message << "Inverted element: det F = " << smallest
-            << " <= 0 at the corner (" << where << ") of a neo-Hookean element";
+            << " <= 0 at the corner (reference position " << where
+            << ") of a neo-Hookean element";
     return message.str();
   }
 
