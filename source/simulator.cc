@@ -791,9 +791,11 @@ namespace ContactDynamics
                       join(which, ", ") + "; the largest nodal body force is " +
                       format_number(body_force.linfty_norm()) + ")";
           }
-        // DataOut evaluates the stresses at the corners
+        // DataOut evaluates the stresses at the corners (collective: on
+        // every process, whatever the failure)
+        const std::string inverted = inverted_corner();
         if (failure.empty())
-          failure = inverted_corner();
+          failure = inverted;
         // e.g. a node that went through a surface unnoticed
         if (failure.empty() && contact)
           failure = contact->check_step(u_ghost);
