@@ -9,7 +9,6 @@
 
 #include <cctype>
 #include <exception>
-#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
