@@ -2,14 +2,19 @@
 #include <deal.II/base/mpi.h>
 
 #include <contact_dynamics/application.h>
+#include <contact_dynamics/output/postprocessing.h>
 #include <contact_dynamics/parallel.h>
 #include <contact_dynamics/scenes/scene_registry.h>
 #include <contact_dynamics/simulator.h>
 
+#include <cctype>
 #include <exception>
-#include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <vector>
 
 namespace ContactDynamics
 {
@@ -42,31 +47,41 @@ namespace ContactDynamics
         std::ostream      &screen,
         const bool         validate_only)
     {
+      const MPI_Comm comm = MPI_COMM_WORLD;
       // a run that stops destroys the simulator before the error leaves
       // here: its TimerOutput then has nothing to say about an uncaught
       // exception
       std::exception_ptr failure;
       {
-        Simulator<dim> simulator(prm, screen);
+        std::unique_ptr<Simulator<dim>> simulator;
+        check_collectively(comm, [&]() {
+          simulator = std::make_unique<Simulator<dim>>(prm, screen, comm);
+        });
         if (validate_only)
           {
-            if (is_root(MPI_COMM_WORLD))
+            if (is_root(comm))
               screen << filename << ": the parameters are valid." << std::endl;
             return;
           }
-        prm.enter_subsection("Output");
-        const std::string directory = prm.get("Output directory");
-        prm.leave_subsection();
-        if (is_root(MPI_COMM_WORLD))
-          {
-            std::filesystem::create_directories(directory);
-            std::ofstream used(directory + "/parameters.prm");
-            prm.print_parameters(used, ParameterHandler::ShortPRM);
-          }
-        MPI_Barrier(MPI_COMM_WORLD);
         try
           {
-            simulator.run();
+            prm.enter_subsection("Output");
+            const std::string directory = prm.get("Output directory");
+            prm.leave_subsection();
+            // the first process writes; every process learns if it failed
+            check_collectively(comm, [&]() {
+              if (is_root(comm))
+                {
+                  create_output_directory(directory);
+                  write_file_atomically(
+                    directory + "/parameters.prm",
+                    [&](std::ostream &out) {
+                      prm.print_parameters(out, ParameterHandler::ShortPRM);
+                    });
+                }
+            });
+            install_stop_handlers();
+            simulator->run();
           }
         catch (...)
           {
@@ -76,14 +91,117 @@ namespace ContactDynamics
       if (failure)
         std::rethrow_exception(failure);
     }
+
+    /**
+     * What ParameterHandler would silently accept: a file that sets nothing
+     * (the defaults would run), and an entry set twice in one subsection
+     * (the last value would win). Follows `subsection`/`end` and
+     * `include`, as ParameterHandler does.
+     */
+    class EntryScan
+    {
+    public:
+      void
+      scan(const std::string &filename, std::vector<std::string> &path)
+      {
+        std::ifstream in(filename);
+        AssertThrow(in,
+                    ExcMessage("Cannot open the parameter file '" + filename +
+                               "'."));
+        std::string  line, text;
+        unsigned int number = 0, first = 0;
+        while (std::getline(in, line))
+          {
+            ++number;
+            if (text.empty())
+              first = number;
+            line = line.substr(0, line.find('#'));
+            // a backslash at the end continues the line
+            const std::string trimmed = Utilities::trim(line);
+            if (!trimmed.empty() && trimmed.back() == '\\')
+              {
+                text += trimmed.substr(0, trimmed.size() - 1) + " ";
+                continue;
+              }
+            text += line;
+            statement(Utilities::trim(text), filename, first, path);
+            text.clear();
+          }
+      }
+
+      unsigned int n_set = 0;
+
+    private:
+      static bool
+      keyword(const std::string &text, const std::string &word)
+      {
+        if (text.size() < word.size())
+          return false;
+        for (std::size_t i = 0; i < word.size(); ++i)
+          if (std::tolower(text[i]) != word[i])
+            return false;
+        return text.size() == word.size() || text[word.size()] == ' ' ||
+               text[word.size()] == '\t';
+      }
+
+      void
+      statement(std::string               text,
+                const std::string        &filename,
+                const unsigned int        number,
+                std::vector<std::string> &path)
+      {
+        for (auto &c : text)
+          if (c == '\t')
+            c = ' ';
+        while (text.find("  ") != std::string::npos)
+          text.erase(text.find("  "), 1);
+        if (keyword(text, "subsection"))
+          path.push_back(Utilities::trim(text.substr(10)));
+        else if (keyword(text, "end"))
+          {
+            if (!path.empty())
+              path.pop_back();
+          }
+        else if (keyword(text, "include"))
+          scan(Utilities::trim(text.substr(7)), path);
+        else if (keyword(text, "set") && text.find('=') != std::string::npos)
+          {
+            ++n_set;
+            std::string name;
+            for (const auto &p : path)
+              name += p + "/";
+            name += Utilities::trim(text.substr(3, text.find('=') - 3));
+            const std::string where =
+              "line " + std::to_string(number) + " of " + filename;
+            const auto previous = seen.find(name);
+            AssertThrow(previous == seen.end(),
+                        ExcMessage("The entry '" + name + "' is set twice: " +
+                                   previous->second + " and " + where +
+                                   ". Set it once (the last value would "
+                                   "silently win)."));
+            seen[name] = where;
+          }
+      }
+
+      std::map<std::string, std::string> seen;
+    };
   } // namespace
 
   unsigned int
   read_parameters(const std::string &filename, ParameterHandler &prm)
   {
-    AssertThrow(std::ifstream(filename).good(),
-                ExcMessage("Cannot open the parameter file '" + filename +
-                           "'."));
+    {
+      EntryScan                entries;
+      std::vector<std::string> path;
+      entries.scan(filename, path);
+      AssertThrow(entries.n_set > 0,
+                  ExcMessage("The parameter file '" + filename +
+                             "' sets nothing (no 'set' line): it would run "
+                             "the default scene with every default. Set at "
+                             "least the scene (subsection Scene, set Scene = "
+                             "...); 'contact-dynamics --print-parameters' "
+                             "lists every parameter."));
+    }
     // First pass: only the dimension and the scene, to learn the bodies.
     ParameterHandler first;
     declare_dimension(first);
@@ -107,8 +225,12 @@ namespace ContactDynamics
                      std::ostream      &screen,
                      const bool         validate_only)
   {
-    ParameterHandler   prm;
-    const unsigned int dim = read_parameters(filename, prm);
+    ParameterHandler prm;
+    unsigned int     dim = 2;
+    // every process reads the file: an error is raised on all of them
+    check_collectively(MPI_COMM_WORLD, [&]() {
+      dim = read_parameters(filename, prm);
+    });
     if (dim == 2)
       run<2>(prm, filename, screen, validate_only);
     else
@@ -137,7 +259,9 @@ namespace ContactDynamics
     {
       ParameterHandler prm;
       if (!filename.empty())
-        read_parameters(filename, prm);
+        check_collectively(MPI_COMM_WORLD, [&]() {
+          read_parameters(filename, prm);
+        });
       else
         {
           ParameterHandler first;
@@ -155,9 +279,25 @@ namespace ContactDynamics
   {
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
     const bool root = (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+    const unsigned int n_processes =
+      Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
     try
       {
         const std::vector<std::string> args(argv + 1, argv + argc);
+        // the command line is the same on every process: its errors are
+        // collective
+        const auto one_file = [&](const std::size_t  first,
+                                  const std::string &what) {
+          std::string files;
+          for (std::size_t i = first; i < args.size(); ++i)
+            files += " " + args[i];
+          AssertThrow(args.size() == first + 1 &&
+                        args[first].rfind("--", 0) != 0,
+                      ExcCollective(what + "one parameter file expected, got " +
+                                    std::to_string(args.size() - first) +
+                                    (files.empty() ? "" : ":" + files) +
+                                    ". Run 'contact-dynamics --help'."));
+        };
         if (args.empty() || args[0] == "--help" || args[0] == "-h")
           {
             if (root)
@@ -166,40 +306,53 @@ namespace ContactDynamics
           }
         if (args[0] == "--print-parameters")
           {
-            AssertThrow(args.size() <= 2,
-                        ExcMessage("--print-parameters takes at most one "
-                                   "parameter file."));
+            if (args.size() > 1)
+              one_file(1, "--print-parameters: ");
+            std::ostringstream text;
+            print_parameters(args.size() == 2 ? args[1] : "", text);
             if (root)
-              print_parameters(args.size() == 2 ? args[1] : "", std::cout);
+              std::cout << text.str() << std::flush;
             return 0;
           }
         if (args[0] == "--validate")
           {
-            AssertThrow(args.size() == 2,
-                        ExcMessage("--validate takes exactly one parameter "
-                                   "file."));
+            one_file(1, "--validate: ");
             run_parameter_file(args[1], std::cout, true);
             return 0;
           }
-        AssertThrow(args.size() == 1 && args[0].rfind("--", 0) != 0,
-                    ExcMessage("Unknown command line '" + args[0] +
-                               "'. Run 'contact-dynamics --help'."));
+        AssertThrow(args[0].rfind("--", 0) != 0,
+                    ExcCollective("Unknown option '" + args[0] +
+                                  "'. Run 'contact-dynamics --help'."));
+        one_file(0, "");
         run_parameter_file(args[0], std::cout, false);
         return 0;
       }
-    catch (const ExceptionBase &e)
+    catch (const ExcStopped &e)
       {
         if (root)
-          {
-            std::cerr << "\nError: ";
-            e.print_info(std::cerr);
-            std::cerr << std::endl;
-          }
+          std::cerr << "\n" << exception_message(e) << std::endl;
+        return 128 + e.signal;
+      }
+    catch (const ExcCollective &e)
+      {
+        // raised on every process: printed once
+        if (root)
+          std::cerr << "\nError: " << exception_message(e) << std::endl;
+        return 1;
       }
     catch (const std::exception &e)
       {
-        if (root)
-          std::cerr << "\nError: " << e.what() << std::endl;
+        if (n_processes == 1)
+          {
+            std::cerr << "\nError: " << exception_message(e) << std::endl;
+            return 1;
+          }
+        // perhaps raised on this process only: the others may wait in a
+        // collective operation forever, so end them all
+        std::cerr << "\nError (on process "
+                  << Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) << " of "
+                  << n_processes << "): " << exception_message(e) << std::endl;
+        MPI_Abort(MPI_COMM_WORLD, 1);
       }
     return 1;
   }

@@ -5,12 +5,27 @@
 #include <contact_dynamics/parallel.h>
 #include <contact_dynamics/parameters.h>
 
+#include <csignal>
 #include <exception>
 #include <sstream>
 #include <vector>
 
 namespace ContactDynamics
 {
+  std::string
+  exception_message(const std::exception &e)
+  {
+    if (const auto *deal = dynamic_cast<const ExceptionBase *>(&e))
+      {
+        std::ostringstream message;
+        deal->print_info(message);
+        const std::string text = Utilities::trim(message.str());
+        if (!text.empty())
+          return text;
+      }
+    return e.what();
+  }
+
   void
   run_collectively(const MPI_Comm               comm,
                    const std::function<void()> &local,
@@ -21,17 +36,11 @@ namespace ContactDynamics
       {
         local();
       }
-    catch (const ExceptionBase &e)
-      {
-        std::ostringstream message;
-        e.print_info(message);
-        failure = Utilities::trim(message.str());
-        if (failure.empty())
-          failure = e.what();
-      }
     catch (const std::exception &e)
       {
-        failure = e.what();
+        failure = exception_message(e);
+        if (failure.empty())
+          failure = "unknown error";
       }
     collective();
     if (Utilities::MPI::n_mpi_processes(comm) > 1)
@@ -41,7 +50,34 @@ namespace ContactDynamics
             failure = f;
             break;
           }
-    AssertThrow(failure.empty(), ExcMessage(failure));
+    AssertThrow(failure.empty(), ExcCollective(failure));
+  }
+
+  namespace
+  {
+    volatile std::sig_atomic_t received_signal = 0;
+
+    extern "C" void
+    request_stop(const int signal)
+    {
+      received_signal = signal;
+    }
+  } // namespace
+
+  void
+  install_stop_handlers()
+  {
+    std::signal(SIGINT, request_stop);
+    std::signal(SIGTERM, request_stop);
+  }
+
+  int
+  stop_signal(const MPI_Comm comm)
+  {
+    const int local = received_signal;
+    return Utilities::MPI::n_mpi_processes(comm) > 1 ?
+             Utilities::MPI::max(local, comm) :
+             local;
   }
 
   namespace

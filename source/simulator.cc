@@ -1,10 +1,12 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/function_parser.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
 
 #include <deal.II/dofs/dof_tools.h>
 
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -17,12 +19,25 @@
 #include <contact_dynamics/simulator.h>
 
 #include <cmath>
-#include <filesystem>
+#include <csignal>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace ContactDynamics
 {
+  namespace
+  {
+    std::string
+    join(const std::vector<std::string> &parts, const std::string &separator)
+    {
+      std::string text;
+      for (const auto &p : parts)
+        text += (text.empty() ? "" : separator) + p;
+      return text;
+    }
+  } // namespace
+
   template <int dim>
   void
   Simulator<dim>::declare_parameters(ParameterHandler  &prm,
@@ -63,7 +78,6 @@ namespace ContactDynamics
                             std::ostream     &screen,
                             const MPI_Comm    comm)
     : pcout(screen, is_root(comm))
-    , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
     , mpi_communicator(comm)
   {
     scene.parse_parameters(prm);
@@ -87,7 +101,6 @@ namespace ContactDynamics
 
     prm.enter_subsection("Nonlinear solver");
     newton.parse_parameters(prm);
-    newton.set_timer(timer);
     prm.leave_subsection();
 
     prm.enter_subsection("Output");
@@ -121,6 +134,11 @@ namespace ContactDynamics
         parallel::shared::Triangulation<dim>::partition_zorder);
     scene.create_triangulation(*triangulation);
     dof_handler.reinit(*triangulation);
+    timer = std::make_unique<TimerOutput>(comm,
+                                          pcout,
+                                          TimerOutput::never,
+                                          TimerOutput::wall_times);
+    newton.set_timer(*timer);
   }
 
   template <int dim>
@@ -144,7 +162,7 @@ namespace ContactDynamics
   void
   Simulator<dim>::setup_system()
   {
-    TimerOutput::Scope t(timer, "setup");
+    TimerOutput::Scope t(*timer, "setup");
     dof_handler.distribute_dofs(*fe);
     locally_owned = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant);
@@ -152,10 +170,13 @@ namespace ContactDynamics
       {
         contact->setup(dof_handler);
         locally_relevant.add_indices(contact->surface_dofs());
-        contact_writer =
-          std::make_unique<ContactWriter<dim>>(*contact,
-                                               mpi_communicator,
-                                               output_parameters.directory);
+        // the first process opens contact_history.csv
+        check_collectively(mpi_communicator, [&]() {
+          contact_writer =
+            std::make_unique<ContactWriter<dim>>(*contact,
+                                                 mpi_communicator,
+                                                 output_parameters.directory);
+        });
       }
 
     // Dirichlet degrees of freedom: Newton increments vanish there; so do
@@ -226,36 +247,58 @@ namespace ContactDynamics
     const unsigned int n_components = fe->n_components();
     std::vector<std::unique_ptr<FunctionParser<dim>>>   functions;
     std::map<types::material_id, const Function<dim> *> u_map, v_map;
-    for (unsigned int b = 0; b < bodies.size(); ++b)
-      for (const bool displacement : {true, false})
-        {
-          const std::string parameter =
-            BodyParameters::subsection_name(bodies[b].name) +
-            (displacement ? "/Initial displacement" : "/Initial velocity");
-          auto expressions =
-            split_vector_expression(displacement ?
-                                      bodies[b].initial_displacement :
-                                      bodies[b].initial_velocity,
-                                    dim,
-                                    parameter);
-          expressions.resize(n_components, "0");
-          auto f = std::make_unique<FunctionParser<dim>>(n_components);
-          try
-            {
-              f->initialize(FunctionParser<dim>::default_variable_names(),
-                            expressions,
-                            {{"pi", numbers::PI}});
-            }
-          catch (...)
-            {
-              AssertThrow(false,
-                          ExcMessage("FunctionParser cannot read the "
-                                     "parameter '" +
-                                     parameter + "'."));
-            }
-          (displacement ? u_map : v_map)[b] = f.get();
-          functions.push_back(std::move(f));
-        }
+    // muparser reads an expression at its first evaluation: evaluate each
+    // once on every process here, since a process without cells of the body
+    // would not, and would wait for the others in the interpolation
+    check_collectively(mpi_communicator, [&]() {
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        for (const bool displacement : {true, false})
+          {
+            const std::string parameter =
+              BodyParameters::subsection_name(bodies[b].name) +
+              (displacement ? "/Initial displacement" : "/Initial velocity");
+            auto expressions =
+              split_vector_expression(displacement ?
+                                        bodies[b].initial_displacement :
+                                        bodies[b].initial_velocity,
+                                      dim,
+                                      parameter);
+            expressions.resize(n_components, "0");
+            auto f = std::make_unique<FunctionParser<dim>>(n_components);
+            try
+              {
+                f->initialize(FunctionParser<dim>::default_variable_names(),
+                              expressions,
+                              {{"pi", numbers::PI}});
+              }
+            catch (...)
+              {
+                AssertThrow(false,
+                            ExcMessage("FunctionParser cannot read the "
+                                       "parameter '" +
+                                       parameter + "'."));
+              }
+            try
+              {
+                for (unsigned int c = 0; c < dim; ++c)
+                  f->value(Point<dim>(), c);
+              }
+            catch (...)
+              {
+                AssertThrow(false,
+                            ExcMessage(
+                              parameter + " = " +
+                              (displacement ? bodies[b].initial_displacement :
+                                              bodies[b].initial_velocity) +
+                              ": the expression cannot be evaluated (it may "
+                              "use the variables x, y" +
+                              (dim == 3 ? ", z" : "") +
+                              ", t and the constant pi)."));
+              }
+            (displacement ? u_map : v_map)[b] = f.get();
+            functions.push_back(std::move(f));
+          }
+    });
     VectorTools::interpolate_based_on_material_id(MappingQ1<dim>(),
                                                   dof_handler,
                                                   u_map,
@@ -268,9 +311,79 @@ namespace ContactDynamics
 
   template <int dim>
   void
+  Simulator<dim>::check_initial_inputs(
+    const std::map<types::global_dof_index, double> &u_dirichlet,
+    const std::map<types::global_dof_index, double> &v_dirichlet,
+    const std::map<types::global_dof_index, double> &a_dirichlet,
+    const double                                     h) const
+  {
+    // name the input that is not finite, not what it leads to
+    std::vector<std::string> causes;
+    for (const auto &body : bodies)
+      for (const double f : body.body_force)
+        if (!std::isfinite(f))
+          causes.push_back(BodyParameters::subsection_name(body.name) +
+                           "/Body force");
+    // residual norms must not overflow either
+    if (!std::isfinite(body_force.l2_norm()))
+      {
+        std::vector<std::string> forces;
+        for (const auto &body : bodies)
+          {
+            std::vector<std::string> f;
+            for (const double x : body.body_force)
+              f.push_back(format_number(x));
+            forces.push_back(BodyParameters::subsection_name(body.name) +
+                             "/Body force = " + join(f, ", "));
+          }
+        causes.push_back("the nodal body forces are too large for the "
+                         "residual norms (" +
+                         join(forces, "; ") + ")");
+      }
+    if (!std::isfinite(u.linfty_norm()))
+      causes.emplace_back(
+        "Body <name>/Initial displacement (not finite somewhere)");
+    if (!std::isfinite(v.linfty_norm()))
+      causes.emplace_back(
+        "Body <name>/Initial velocity (not finite somewhere)");
+    const auto finite = [](const std::map<types::global_dof_index, double> &m) {
+      for (const auto &p : m)
+        if (!std::isfinite(p.second))
+          return false;
+      return true;
+    };
+    if (!finite(u_dirichlet))
+      causes.emplace_back("Boundary conditions/Dirichlet (a value at t = 0 "
+                          "is not finite)");
+    if (!finite(v_dirichlet) || !finite(a_dirichlet))
+      {
+        // the rates are central differences over h = 1e-4 time steps
+        if (!std::isnormal(h * h))
+          causes.push_back("Time integration/Time step = " +
+                           format_number(integrator.time_step()) +
+                           " (too small to difference the Dirichlet values "
+                           "over 1e-4 of it: (1e-4 dt)^2 underflows)");
+        else
+          causes.emplace_back(
+            "Boundary conditions/Dirichlet (the velocity or acceleration "
+            "of a prescribed motion at t = 0 is not finite: the expression "
+            "is not smooth there)");
+      }
+    const std::vector<std::string> all =
+      Utilities::MPI::n_mpi_processes(mpi_communicator) > 1 ?
+        Utilities::MPI::all_gather(mpi_communicator, join(causes, "; ")) :
+        std::vector<std::string>{join(causes, "; ")};
+    for (const auto &c : all)
+      AssertThrow(c.empty(),
+                  ExcCollective("The initial state cannot be computed: " + c +
+                                "."));
+  }
+
+  template <int dim>
+  void
   Simulator<dim>::apply_initial_conditions()
   {
-    TimerOutput::Scope t(timer, "initial conditions");
+    TimerOutput::Scope t(*timer, "initial conditions");
     interpolate_initial_state();
     a = 0;
 
@@ -278,12 +391,11 @@ namespace ContactDynamics
     // by central differences keeps the Newmark update of those dofs
     // consistent from the first step on.
     std::map<types::global_dof_index, double> v_dirichlet, a_dirichlet;
-    dirichlet.rates(dof_handler,
-                    0.,
-                    1e-4 * integrator.time_step(),
-                    v_dirichlet,
-                    a_dirichlet);
-    for (const auto &p : dirichlet.values(dof_handler, 0.))
+    const double                              h = 1e-4 * integrator.time_step();
+    dirichlet.rates(dof_handler, 0., h, v_dirichlet, a_dirichlet);
+    const auto u_dirichlet = dirichlet.values(dof_handler, 0.);
+    check_initial_inputs(u_dirichlet, v_dirichlet, a_dirichlet, h);
+    for (const auto &p : u_dirichlet)
       if (locally_owned.is_element(p.first))
         u(p.first) = p.second;
     u.compress(VectorOperation::insert);
@@ -339,15 +451,28 @@ namespace ContactDynamics
                         jacobian,
                         residual_full_old);
 
-    AssertThrow(std::isfinite(u.l2_norm()) && std::isfinite(v.l2_norm()),
-                ExcMessage("The initial displacement or velocity (Body <name>/"
-                           "Initial displacement, Initial velocity, or the "
-                           "Dirichlet values at t = 0) is not a finite number "
-                           "somewhere."));
-    AssertThrow(std::isfinite(a.l2_norm()),
-                ExcMessage("The initial acceleration is not finite: check "
-                           "that the Dirichlet expressions are smooth at "
-                           "t = 0 and that every body is held or free."));
+    // the inputs were finite (check_initial_inputs): what is not finite
+    // now overflowed (linfty: the l2 norm of 1e200 overflows)
+    std::vector<std::string> infinite;
+    if (!std::isfinite(u.linfty_norm()))
+      infinite.emplace_back("displacement");
+    if (!std::isfinite(v.linfty_norm()))
+      infinite.emplace_back("velocity");
+    if (!std::isfinite(a.linfty_norm()))
+      infinite.emplace_back("acceleration");
+    if (!std::isfinite(residual_full_old.linfty_norm()))
+      infinite.emplace_back("internal forces");
+    AssertThrow(infinite.empty(),
+                ExcCollective(
+                  "The initial " + join(infinite, ", ") +
+                  " are not finite numbers although every input is: a "
+                  "value overflows (body force " +
+                  format_number(body_force.linfty_norm()) +
+                  " per node, Young's moduli, densities, initial "
+                  "displacement and velocity, Dirichlet values at t = 0, "
+                  "Time integration/Time step = " +
+                  format_number(integrator.time_step()) +
+                  "), or a body is neither held nor free."));
     if (contact)
       {
         // gaps at the initial state: overlapping bodies stop the run here
@@ -365,7 +490,9 @@ namespace ContactDynamics
                           contact_residual,
                           jacobian,
                           contact_full);
-        contact->check_initial_state(screen_log());
+        check_collectively(mpi_communicator, [&]() {
+          contact->check_initial_state(screen_log());
+        });
       }
 
     energies = EnergyBalance();
@@ -380,9 +507,10 @@ namespace ContactDynamics
   Simulator<dim>::initialize()
   {
     wall_timer.restart();
-    if (is_root(mpi_communicator))
-      std::filesystem::create_directories(output_parameters.directory);
-    MPI_Barrier(mpi_communicator);
+    check_collectively(mpi_communicator, [&]() {
+      if (is_root(mpi_communicator))
+        create_output_directory(output_parameters.directory);
+    });
     time                         = 0;
     step                         = 0;
     cumulative_newton_iterations = 0;
@@ -407,11 +535,13 @@ namespace ContactDynamics
     if (contact)
       for (const auto &c : contact->statistics_columns())
         columns.push_back(c);
-    if (is_root(mpi_communicator))
-      statistics =
-        std::make_unique<StatisticsFile>(output_parameters.directory +
-                                           "/statistics.csv",
-                                         columns);
+    check_collectively(mpi_communicator, [&]() {
+      if (is_root(mpi_communicator))
+        statistics =
+          std::make_unique<StatisticsFile>(output_parameters.directory +
+                                             "/statistics.csv",
+                                           columns);
+    });
     solution_writer =
       std::make_unique<SolutionWriter<dim>>(mpi_communicator,
                                             output_parameters.directory,
@@ -515,11 +645,11 @@ namespace ContactDynamics
     ghosted(a_new, a_ghost);
     if (contact)
       {
-        TimerOutput::Scope t(timer, "contact search");
+        TimerOutput::Scope t(*timer, "contact search");
         if (contact->update_candidates(u_ghost))
           setup_sparsity();
       }
-    TimerOutput::Scope t(timer, "bulk assembly");
+    TimerOutput::Scope t(*timer, "bulk assembly");
     mechanics->assemble(u_ghost,
                         v_ghost,
                         a_ghost,
@@ -533,7 +663,7 @@ namespace ContactDynamics
     t.stop();
     if (contact)
       {
-        TimerOutput::Scope tc(timer, "contact assembly");
+        TimerOutput::Scope tc(*timer, "contact assembly");
         contact->assemble(TrialState{u_ghost,
                                      v_ghost,
                                      integrator.velocity_factor(dt_current),
@@ -609,7 +739,7 @@ namespace ContactDynamics
       contact->start_step();
     NewtonSolver::Result result;
     {
-      TimerOutput::Scope t(timer, "Newton solve");
+      TimerOutput::Scope t(*timer, "Newton solve");
       result = newton.solve(*this,
                             jacobian,
                             residual,
@@ -622,7 +752,7 @@ namespace ContactDynamics
     EnergyBalance updated = energies;
     if (result.converged)
       {
-        TimerOutput::Scope t(timer, "energies");
+        TimerOutput::Scope t(*timer, "energies");
         set_trial_velocity_and_acceleration();
         VectorType mean_velocity(v);
         mean_velocity.sadd(0.5, 0.5, v_new);
@@ -646,7 +776,26 @@ namespace ContactDynamics
             0.;
         updated.elastic = mechanics->elastic_energy(u_ghost);
         if (!std::isfinite(updated.error()))
-          failure = "the energies are not finite numbers";
+          {
+            std::vector<std::string> which;
+            for (const auto &e :
+                 {std::make_pair(updated.kinetic, "kinetic"),
+                  std::make_pair(updated.elastic, "elastic"),
+                  std::make_pair(updated.dissipated, "damping dissipation"),
+                  std::make_pair(updated.external, "external work")})
+              if (!std::isfinite(e.first))
+                which.push_back(
+                  std::string(e.first != e.first ? "NaN " : "infinite ") +
+                  e.second);
+            failure = "the energies are not finite numbers (" +
+                      join(which, ", ") + "; the largest nodal body force is " +
+                      format_number(body_force.linfty_norm()) + ")";
+          }
+        // DataOut evaluates the stresses at the corners (collective: on
+        // every process, whatever the failure)
+        const std::string inverted = inverted_corner();
+        if (failure.empty())
+          failure = inverted;
         // e.g. a node that went through a surface unnoticed
         if (failure.empty() && contact)
           failure = contact->check_step(u_ghost);
@@ -666,7 +815,6 @@ namespace ContactDynamics
         // u_ghost: the converged state, as the last assembly saw it
         contact->commit_step(u_ghost, u);
         energies.kinetic += apply_velocity_update();
-        contact_writer->write_history(*contact, t_new);
         energies.frictional = contact->dissipated_energy();
       }
     u.swap(u_new);
@@ -688,7 +836,7 @@ namespace ContactDynamics
                               const double       final_residual,
                               const bool         force_vtu)
   {
-    TimerOutput::Scope  t(timer, "output");
+    TimerOutput::Scope  t(*timer, "output");
     std::vector<double> row{double(step),
                             time,
                             step == 0 ? 0. : dt_current,
@@ -706,11 +854,27 @@ namespace ContactDynamics
     if (contact)
       for (const double x : contact->statistics())
         row.push_back(x);
-    if (statistics)
-      statistics->write_row(row);
     const unsigned int interval = output_parameters.vtu_interval;
-    if (interval > 0 && (force_vtu || step % interval == 0))
-      write_solution();
+    try
+      {
+        // a failed write (a full disk) stops every process, naming the file
+        check_collectively(mpi_communicator, [&]() {
+          if (statistics)
+            statistics->write_row(row);
+          if (contact && step > 0)
+            contact_writer->write_history(*contact, time);
+        });
+        if (interval > 0 && (force_vtu || step % interval == 0))
+          write_solution();
+      }
+    catch (const ExcCollective &e)
+      {
+        AssertThrow(false,
+                    ExcCollective(
+                      exception_message(e) + " The run stops at step " +
+                      std::to_string(step) + ", t = " + format_number(time) +
+                      "; what was written before is complete."));
+      }
 
     if (step > 0)
       pcout << "Step " << std::setw(5) << step << "  t = " << std::setw(10)
@@ -757,15 +921,82 @@ namespace ContactDynamics
         for (unsigned int f = 0; f < fields.size(); ++f)
           fields[f].first = &ghosted(*fields[f].first, field_ghosts[f]);
       }
-    solution_writer->write(dof_handler,
-                           *mechanics,
-                           ghosted(u, scratch_ghost[0]),
-                           ghosted(v, scratch_ghost[1]),
-                           time,
-                           step,
-                           fields);
-    if (contact)
-      contact_writer->write_surfaces(*contact, step);
+    const VectorType &u_out = ghosted(u, scratch_ghost[0]);
+    const VectorType &v_out = ghosted(v, scratch_ghost[1]);
+    check_collectively(mpi_communicator, [&]() {
+      solution_writer
+        ->write(dof_handler, *mechanics, u_out, v_out, time, step, fields);
+      if (contact)
+        contact_writer->write_surfaces(*contact, step);
+    });
+    last_vtu_step = step;
+  }
+
+  template <int dim>
+  std::string
+  Simulator<dim>::inverted_corner() const
+  {
+    // corners of the trial state's neo-Hookean cells (the trapezoidal
+    // rule's points)
+    double     smallest = std::numeric_limits<double>::max();
+    Point<dim> where;
+    const FEValuesExtractors::Vector displacement(0);
+    FEValues<dim>                    fe_values(*fe,
+                            QTrapezoid<dim>(),
+                            update_gradients | update_quadrature_points);
+    std::vector<Tensor<2, dim>>      gradients(fe_values.n_quadrature_points);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          !mechanics->material(cell->material_id()).is_linear())
+        {
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_gradients(u_ghost, gradients);
+          for (unsigned int q = 0; q < gradients.size(); ++q)
+            {
+              const double J =
+                determinant(unit_symmetric_tensor<dim>() + gradients[q]);
+              if (!(J >= smallest))
+                {
+                  smallest = J;
+                  where    = fe_values.quadrature_point(q);
+                }
+            }
+        }
+    // the same answer on every process: the smallest over all
+    const auto all =
+      Utilities::MPI::all_gather(mpi_communicator,
+                                 std::make_pair(smallest, where));
+    for (const auto &p : all)
+      if (!(p.first >= smallest))
+        {
+          smallest = p.first;
+          where    = p.second;
+        }
+    if (smallest > 0)
+      return "";
+    std::ostringstream message;
+    message << "Inverted element: det F = " << smallest
+            << " <= 0 at the corner (reference position " << where
+            << ") of a neo-Hookean element";
+    return message.str();
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::stop_run(const std::string &reason, const int signal)
+  {
+    // the last completed step's VTU files, if the interval skipped them
+    const bool vtu = output_parameters.vtu_interval > 0;
+    if (vtu && last_vtu_step != int(step))
+      write_solution();
+    std::ostringstream message;
+    message << reason << " The run stops at step " << step << ", t = " << time
+            << "; statistics.csv" << (contact ? ", contact_history.csv" : "")
+            << (vtu ? " and the VTU files" : "") << " in '"
+            << output_parameters.directory << "' are complete up to this step.";
+    if (signal != 0)
+      AssertThrow(false, ExcStopped(message.str(), signal));
+    AssertThrow(false, ExcCollective(message.str()));
   }
 
   template <int dim>
@@ -778,14 +1009,17 @@ namespace ContactDynamics
     const double minimum_time_step = integrator.minimum_time_step();
     double       dt                = time_step;
     unsigned int good_since_cut    = 0;
-    bool         last_step_wrote   = true;
     while (time < end_time - 1e-9 * time_step)
       {
+        // SIGINT, SIGTERM: stop between steps, with complete outputs
+        if (const int signal = stop_signal(mpi_communicator))
+          stop_run(std::string(signal == SIGINT  ? "Interrupted (SIGINT)." :
+                               signal == SIGTERM ? "Terminated (SIGTERM)." :
+                                                   "Stopped by a signal."),
+                   signal);
         const double dt_try = std::min(dt, end_time - time);
         if (advance(dt_try))
           {
-            last_step_wrote = (output_parameters.vtu_interval > 0 &&
-                               step % output_parameters.vtu_interval == 0);
             if (dt < time_step && ++good_since_cut >= 2)
               {
                 dt             = std::min(2 * dt, time_step);
@@ -797,28 +1031,23 @@ namespace ContactDynamics
             ++time_step_cuts;
             good_since_cut = 0;
             dt             = dt_try / 2;
-            AssertThrow(dt >= minimum_time_step,
-                        ExcMessage(
-                          "The time step would have to be cut to " +
-                          format_number(dt) + " at t = " + format_number(time) +
-                          ", below Time integration/Minimum time step = " +
-                          format_number(minimum_time_step) +
-                          " (the last attempt: " + last_failure +
-                          "). The run stops here; statistics.csv and the VTU "
-                          "files in '" +
-                          output_parameters.directory +
-                          "' hold every completed step."));
+            if (dt < minimum_time_step)
+              stop_run("The time step would have to be cut to " +
+                       format_number(dt) + " at t = " + format_number(time) +
+                       ", below Time integration/Minimum time step = " +
+                       format_number(minimum_time_step) +
+                       " (the last attempt: " + last_failure + ").");
             pcout << "  cutting the time step to " << dt << std::endl;
           }
       }
-    if (!last_step_wrote && output_parameters.vtu_interval > 0)
+    if (output_parameters.vtu_interval > 0 && last_vtu_step != int(step))
       write_solution();
 
     pcout << "Finished at t = " << time << " after " << step << " steps ("
           << cumulative_newton_iterations << " Newton iterations, "
           << time_step_cuts << " time step cuts). Results are in '"
           << output_parameters.directory << "'." << std::endl;
-    timer.print_summary();
+    timer->print_summary();
   }
 
   template class Simulator<2>;

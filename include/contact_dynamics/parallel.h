@@ -4,6 +4,7 @@
 #ifndef contact_dynamics_parallel_h
 #define contact_dynamics_parallel_h
 
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
 
@@ -19,15 +20,71 @@ namespace ContactDynamics
   using namespace dealii;
 
   /**
+   * An error every process of the communicator raised together (with the
+   * same message): the command line prints it once and exits normally. Any
+   * other exception that escapes on several processes may have been raised
+   * on some of them only, while the others wait in a collective operation:
+   * the command line then aborts the job (doc/parallel.md).
+   */
+  class ExcCollective : public StandardExceptions::ExcMessage
+  {
+  public:
+    using StandardExceptions::ExcMessage::ExcMessage;
+  };
+
+  /**
+   * A run stopped at the end of a step because of a signal (SIGINT,
+   * SIGTERM): every output is complete; the exit status is 128 + signal.
+   */
+  class ExcStopped : public ExcCollective
+  {
+  public:
+    ExcStopped(const std::string &message, const int signal)
+      : ExcCollective(message)
+      , signal(signal)
+    {}
+    int signal;
+  };
+
+  /**
+   * The message of an exception without the decoration of deal.II's
+   * print_info().
+   */
+  std::string
+  exception_message(const std::exception &e);
+
+  /**
    * Runs `local` (work that may throw on some processes only), then
    * `collective` (compress() and reductions) on every process, and then
-   * throws on every process, with the message of the first process that
-   * failed, if any did.
+   * throws ExcCollective on every process, with the message of the first
+   * process that failed, if any did.
    */
   void
   run_collectively(const MPI_Comm               comm,
                    const std::function<void()> &local,
                    const std::function<void()> &collective);
+
+  /**
+   * run_collectively() without collective work: for what the first
+   * process alone does (file output) or what may fail on some processes.
+   */
+  inline void
+  check_collectively(const MPI_Comm comm, const std::function<void()> &local)
+  {
+    run_collectively(comm, local, []() {});
+  }
+
+  /**
+   * SIGINT and SIGTERM then only set a flag: the time loop stops at the end
+   * of the current step (Simulator::run()).
+   */
+  void
+  install_stop_handlers();
+
+  /** The signal that asked to stop on any process of `comm`, or 0
+   * (collective). */
+  int
+  stop_signal(const MPI_Comm comm);
 
   /** The `Parallel` subsection. */
   struct ParallelParameters

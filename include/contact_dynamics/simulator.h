@@ -171,6 +171,15 @@ namespace ContactDynamics
     /** u and v at t = 0 from the bodies' initial conditions. */
     void
     interpolate_initial_state();
+    /** Throws, naming the parameter, if an input of the initial state (body
+     * force, initial conditions, Dirichlet values and rates) is not finite.
+     */
+    void
+    check_initial_inputs(
+      const std::map<types::global_dof_index, double> &u_dirichlet,
+      const std::map<types::global_dof_index, double> &v_dirichlet,
+      const std::map<types::global_dof_index, double> &a_dirichlet,
+      const double                                     h) const;
     void
     apply_initial_conditions();
     void
@@ -198,8 +207,27 @@ namespace ContactDynamics
     std::ostream &
     screen_log();
 
+    /**
+     * Corners of neo-Hookean elements where det F <= 0 in the trial state
+     * u_ghost: "" if none, else what and where (the same on every process).
+     * The quadrature points can all be fine while a corner is inverted, and
+     * the stresses written there would be NaN.
+     */
+    std::string
+    inverted_corner() const;
+
+    /**
+     * Ends the run at the last completed step: writes its VTU files if the
+     * interval skipped them, then throws ExcCollective with `reason` and
+     * where the outputs are (or ExcStopped for a signal).
+     */
+    [[noreturn]] void
+    stop_run(const std::string &reason, const int signal = 0);
+
     ConditionalOStream pcout;
-    TimerOutput        timer;
+    // created last by the constructor: a TimerOutput destroyed by an
+    // exception prints a banner before the error message
+    std::unique_ptr<TimerOutput> timer;
 
     Scene<dim>                  scene;
     SceneLayout                 layout;
@@ -239,6 +267,7 @@ namespace ContactDynamics
     unsigned int  time_step_cuts               = 0;
     unsigned int  linear_iterations            = 0; // GMRES, last step
     bool          structure_changed            = true;
+    int           last_vtu_step                = -1;
     std::string   last_failure; // why the last failed step failed
     EnergyBalance energies;
 

@@ -2,9 +2,11 @@
 
 #include <contact_dynamics/contact/contact_formulation.h>
 #include <contact_dynamics/output/contact_writer.h>
+#include <contact_dynamics/output/postprocessing.h>
 #include <contact_dynamics/parallel.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <iomanip>
 
@@ -41,8 +43,9 @@ namespace ContactDynamics
       }
     if (directory.empty() || !is_root(comm))
       return;
-    history =
-      std::make_unique<std::ofstream>(directory + "/contact_history.csv");
+    errno   = 0;
+    history = std::make_unique<std::ofstream>(history_name());
+    check_written(*history, history_name());
     *history << "time";
     for (const auto &m : monitored)
       {
@@ -51,6 +54,14 @@ namespace ContactDynamics
                  << ",gap(" << X[0] << " " << X[1] << ")";
       }
     *history << std::endl;
+    check_written(*history, history_name());
+  }
+
+  template <int dim>
+  std::string
+  ContactWriter<dim>::history_name() const
+  {
+    return directory + "/contact_history.csv";
   }
 
   template <int dim>
@@ -66,7 +77,9 @@ namespace ContactDynamics
         const auto &node = contact.secondary_nodes(m.first).states[m.second];
         *history << ',' << node.pressure << ',' << node.normalized_gap();
       }
+    errno = 0;
     *history << std::endl;
+    check_written(*history, history_name());
   }
 
   template <int dim>
@@ -76,8 +89,18 @@ namespace ContactDynamics
   {
     if (!is_root(comm))
       return;
-    std::ofstream out(directory + "/contact_surface-" +
-                      Utilities::int_to_string(step, 5) + ".csv");
+    write_file_atomically(directory + "/contact_surface-" +
+                            Utilities::int_to_string(step, 5) + ".csv",
+                          [&](std::ostream &out) {
+                            write_surfaces(contact, out);
+                          });
+  }
+
+  template <int dim>
+  void
+  ContactWriter<dim>::write_surfaces(const ContactFormulation<dim> &contact,
+                                     std::ostream                  &out) const
+  {
     out << "pair,node,x,y,gap,pressure,active,tangential_traction,stick\n";
     for (unsigned int p = 0; p < contact.n_pairs(); ++p)
       {

@@ -8,8 +8,14 @@
 #include <contact_dynamics/parallel.h>
 #include <contact_dynamics/parameters.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <iomanip>
+#include <sstream>
+#include <system_error>
 
 namespace ContactDynamics
 {
@@ -41,15 +47,82 @@ namespace ContactDynamics
 
 
 
+  void
+  create_output_directory(const std::string &directory)
+  {
+    std::error_code error;
+    std::filesystem::create_directories(directory, error);
+    if (!error && !std::filesystem::is_directory(directory, error))
+      error = std::make_error_code(std::errc::not_a_directory);
+    AssertThrow(!error,
+                ExcMessage("Output/Output directory = " + directory +
+                           ": cannot create this directory (" +
+                           error.message() +
+                           "). Give a directory that can be created or "
+                           "written."));
+  }
+
+  void
+  check_written(const std::ostream &stream,
+                const std::string  &filename,
+                const std::string  &temporary)
+  {
+    // errno still holds the reason of the failed open or write
+    const int error = errno;
+    AssertThrow(stream.good(),
+                ExcMessage("Cannot write the file '" + filename + "'" +
+                           (temporary.empty() ? std::string() :
+                                                " (as '" + temporary + "')") +
+                           (error != 0 ?
+                              std::string(": ") + std::strerror(error) :
+                              std::string()) +
+                           "."));
+  }
+
+  void
+  write_file_atomically(const std::string                         &filename,
+                        const std::function<void(std::ostream &)> &write)
+  {
+    const std::string temporary = filename + ".part";
+    try
+      {
+        errno = 0;
+        std::ofstream out(temporary);
+        check_written(out, filename, temporary);
+        write(out);
+        out.flush();
+        check_written(out, filename, temporary);
+        out.close();
+        check_written(out, filename, temporary);
+      }
+    catch (...)
+      {
+        std::remove(temporary.c_str());
+        throw;
+      }
+    errno = 0;
+    if (std::rename(temporary.c_str(), filename.c_str()) != 0)
+      {
+        const int error = errno;
+        std::remove(temporary.c_str());
+        AssertThrow(false,
+                    ExcMessage("Cannot write the file '" + filename +
+                               "': " + std::strerror(error) + "."));
+      }
+  }
+
   StatisticsFile::StatisticsFile(const std::string              &filename,
                                  const std::vector<std::string> &columns)
-    : file(filename)
+    : filename(filename)
     , n_columns(columns.size())
   {
-    AssertThrow(file, ExcMessage("Cannot write the file " + filename + "."));
+    errno = 0;
+    file.open(filename);
+    check_written(file, filename);
     for (std::size_t i = 0; i < columns.size(); ++i)
       file << (i ? "," : "") << columns[i];
     file << std::endl;
+    check_written(file, filename);
   }
 
   void
@@ -67,7 +140,9 @@ namespace ContactDynamics
         else
           file << std::setprecision(12) << v;
       }
+    errno = 0;
     file << std::endl; // flushes: a crash keeps every finished step
+    check_written(file, filename);
   }
 
 
@@ -167,6 +242,14 @@ namespace ContactDynamics
             computed[q](d) = inputs.solution_values[q](d);
       }
     };
+
+    // DataOut with the names of its fields, to say which one is not finite
+    template <int dim>
+    class NamedDataOut : public DataOut<dim>
+    {
+    public:
+      using DataOut<dim>::get_dataset_names;
+    };
   } // namespace
 
 
@@ -208,7 +291,7 @@ namespace ContactDynamics
                                                   "field_" + std::to_string(c);
 
     StressPostprocessor<dim> stress(mechanics);
-    DataOut<dim>             data_out;
+    NamedDataOut<dim>        data_out;
     data_out.attach_dof_handler(dof_handler);
     data_out.add_data_vector(displacement,
                              u_names,
@@ -231,6 +314,30 @@ namespace ContactDynamics
     data_out.add_data_vector(material_id, "material_id");
     data_out.build_patches();
 
+    // NaN or infinite values never reach a file: they name their field
+    const auto names = data_out.get_dataset_names();
+    for (const auto &patch : data_out.get_patches())
+      for (unsigned int i = 0; i < patch.data.n_rows(); ++i)
+        for (unsigned int j = 0; j < patch.data.n_cols(); ++j)
+          if (!std::isfinite(patch.data(i, j)))
+            {
+              // the vertices come first in a patch of degree 1
+              const auto        &where = patch.vertices[std::min<
+                unsigned int>(j, GeometryInfo<dim>::vertices_per_cell - 1)];
+              std::ostringstream message;
+              message << "The solution at t = " << time << " (step " << step
+                      << ") is not finite: "
+                      << (i < names.size() ? names[i] : "a field") << " = "
+                      << patch.data(i, j) << " at (" << where << ")"
+                      << (i < names.size() &&
+                              names[i].find("stress") != std::string::npos ?
+                            ", in an element inverted at a corner (det F "
+                            "<= 0 there)" :
+                            "")
+                      << ". Its VTU file is not written.";
+              AssertThrow(false, ExcMessage(message.str()));
+            }
+
     const unsigned int n_processes = Utilities::MPI::n_mpi_processes(comm);
     const std::string  base  = "solution-" + Utilities::int_to_string(step, 5);
     const auto         piece = [&](const unsigned int p) {
@@ -238,9 +345,9 @@ namespace ContactDynamics
                                         base + "." + std::to_string(p) + ".vtu";
     };
     const std::string name = piece(Utilities::MPI::this_mpi_process(comm));
-    std::ofstream     out(directory + "/" + name);
-    AssertThrow(out, ExcMessage("Cannot write " + directory + "/" + name));
-    data_out.write_vtu(out);
+    write_file_atomically(directory + "/" + name, [&](std::ostream &out) {
+      data_out.write_vtu(out);
+    });
     if (!is_root(comm))
       return;
     std::string record = name;
@@ -250,12 +357,16 @@ namespace ContactDynamics
         for (unsigned int p = 0; p < n_processes; ++p)
           pieces.push_back(piece(p));
         record = base + ".pvtu";
-        std::ofstream pvtu(directory + "/" + record);
-        data_out.write_pvtu_record(pvtu, pieces);
+        write_file_atomically(directory + "/" + record, [&](std::ostream &out) {
+          data_out.write_pvtu_record(out, pieces);
+        });
       }
-    records.emplace_back(time, record);
-    std::ofstream pvd(directory + "/solution.pvd");
-    DataOutBase::write_pvd_record(pvd, records);
+    auto listed = records;
+    listed.emplace_back(time, record);
+    write_file_atomically(directory + "/solution.pvd", [&](std::ostream &out) {
+      DataOutBase::write_pvd_record(out, listed);
+    });
+    records = listed;
   }
 
   template class SolutionWriter<2>;

@@ -218,7 +218,12 @@ namespace ContactDynamics
               << std::defaultfloat << std::endl;
         if (!std::isfinite(norm))
           {
-            result.failure = "the residual is not a finite number";
+            // a norm of finite forces overflows above 1e154
+            const double largest = residual.linfty_norm();
+            result.failure       = std::isfinite(largest) ?
+                                     "the residual norm overflows (forces up to " +
+                                 format_number(largest) + ")" :
+                                     "the residual is not a finite number";
             linear_solver.invalidate();
             return result;
           }

@@ -9,6 +9,7 @@
 
 #include <fstream>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,16 +32,24 @@ namespace ContactDynamics
                   const MPI_Comm                 comm,
                   const std::string             &directory);
 
-    /** A row of contact_history.csv after the step to `time`. */
+    /** A row of contact_history.csv after the step to `time`; every write
+     * is checked (throws naming the file). */
     void
     write_history(const ContactFormulation<dim> &contact, const double time);
 
-    /** contact_surface-NNNNN.csv at output step `step`. */
+    /** contact_surface-NNNNN.csv at output step `step` (written under a
+     * temporary name, then renamed). */
     void
     write_surfaces(const ContactFormulation<dim> &contact,
                    const unsigned int             step) const;
 
   private:
+    void
+    write_surfaces(const ContactFormulation<dim> &contact,
+                   std::ostream                  &out) const;
+    std::string
+    history_name() const;
+
     MPI_Comm                                           comm;
     std::string                                        directory;
     std::vector<std::pair<unsigned int, unsigned int>> monitored; // pair, node

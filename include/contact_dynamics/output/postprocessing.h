@@ -10,6 +10,8 @@
 #include <contact_dynamics/mechanics/solid_mechanics.h>
 
 #include <fstream>
+#include <functional>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,6 +31,33 @@ namespace ContactDynamics
     parse_parameters(ParameterHandler &prm);
   };
 
+  /**
+   * Creates `directory` (Output/Output directory) and its parents; throws
+   * naming the parameter, the directory and the reason if it cannot.
+   */
+  void
+  create_output_directory(const std::string &directory);
+
+  /**
+   * Writes `filename` through `write` under a temporary name in the same
+   * directory and renames it when complete: a run stopped in the middle
+   * leaves the old file or the new one, never a truncated one. Throws with
+   * the file's name and the system's reason if a write fails; the
+   * temporary file is then removed.
+   */
+  void
+  write_file_atomically(const std::string                         &filename,
+                        const std::function<void(std::ostream &)> &write);
+
+  /**
+   * Throws with the file's name and the system's reason if `stream`, which
+   * writes `filename` (under the name `temporary`, if not empty), failed.
+   */
+  void
+  check_written(const std::ostream &stream,
+                const std::string  &filename,
+                const std::string  &temporary = "");
+
   /** A CSV file with a header line, written and flushed row by row. */
   class StatisticsFile
   {
@@ -41,6 +70,7 @@ namespace ContactDynamics
     write_row(const std::vector<double> &values);
 
   private:
+    std::string   filename;
     std::ofstream file;
     std::size_t   n_columns;
   };
@@ -63,7 +93,10 @@ namespace ContactDynamics
      * `nodal_fields`: further vectors on the same degrees of freedom, each
      * written as one scalar field: its component `dim` (the first one after
      * the displacement), under the given name. All vectors must hold the
-     * ghost entries of the locally owned cells.
+     * ghost entries of the locally owned cells. Writes nothing and throws,
+     * naming the field, the place and the time, if a value is not finite
+     * (an element inverted at a corner gives NaN stresses there). Local:
+     * call it on every process inside check_collectively().
      */
     void
     write(const DoFHandler<dim>     &dof_handler,
