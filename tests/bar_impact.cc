@@ -31,54 +31,11 @@ namespace
   {
     const double     dt = 0.0125;
     ParameterHandler prm;
-    read_test_parameters("bar.prm",
-                         R"(
-subsection Scene
-  set Scene = bar impact
-  subsection Bar impact
-    set Bar length = 1
-    set Bar height = 0.1
-    set Gap = 0.01
-    set Target = wall
-    set Elements along bar = 40
-  end
-end
-subsection Body striker
-  set Young's modulus = 1
-  set Poisson's ratio = 0
-  set Density = 1
-  set Initial velocity = 0.1; 0
-end
-subsection Body target
-  set Young's modulus = 1
-  set Poisson's ratio = 0
-end
-subsection Boundary conditions
-  set Dirichlet = target_left: xy: 0; target_right: xy: 0; target_top: xy: 0; target_bottom: xy: 0
-end
-subsection Time integration
-  set Time step = 0.0125
-  set End time = 3
-end
-subsection Nonlinear solver
-  set Absolute tolerance = 1e-12
-end
-subsection Contact
-  set Formulation = mortar
-  set Pairs = striker_right: target_left
-  subsection Mortar
-    set c_n = 10
-    set Stabilization = )" +
-                           stabilization +
-                           R"(
-  end
-end
-subsection Output
-  set Output directory = output_bar
-  set VTU interval = 0
-end
-)",
-                         prm);
+    read_shipped("prm/examples/bar_impact.prm",
+                 {{"Contact/Mortar/Stabilization", stabilization},
+                  {"Output/Output directory", "output_bar"},
+                  {"Output/VTU interval", "0"}},
+                 prm);
     std::ostringstream            screen;
     ContactDynamics::Simulator<2> simulator(prm, screen);
     simulator.initialize();

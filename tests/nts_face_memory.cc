@@ -31,46 +31,16 @@ main()
 {
   initlog();
   ParameterHandler prm;
-  read_test_parameters("nts_memory.prm",
-                       R"(
-subsection Scene
-  set Scene = bar impact
-  subsection Bar impact
-    set Bar length = 1
-    set Bar height = 0.1
-    set Gap = 0.01
-    set Target = wall
-    set Elements along bar = 40
-  end
-end
-subsection Body striker
-  set Young's modulus = 1
-  set Poisson's ratio = 0
-end
-subsection Body target
-  set Young's modulus = 1
-  set Poisson's ratio = 0
-end
-subsection Boundary conditions
-  set Dirichlet = target_right: xy: 0
-end
-subsection Time integration
-  set Time step = 0.0125
-  set End time = 1
-end
-subsection Contact
-  set Formulation = nts
-  set Pairs = striker_right: target_left
-  subsection Node to segment
-    set c_n = 10
-  end
-end
-subsection Output
-  set Output directory = output_nts_memory
-  set VTU interval = 0
-end
-)",
-                       prm);
+  // the bar impact, the striker at rest, the wall held at its back only,
+  // node-to-segment contact
+  read_shipped("prm/examples/bar_impact.prm",
+               {{"Body striker/Initial velocity", "0; 0"},
+                {"Boundary conditions/Dirichlet", "target_right: xy: 0"},
+                {"Contact/Formulation", "nts"},
+                {"Contact/Node to segment/c_n", "10"},
+                {"Output/Output directory", "output_nts_memory"},
+                {"Output/VTU interval", "0"}},
+               prm);
   std::ostringstream            screen;
   ContactDynamics::Simulator<2> simulator(prm, screen);
   simulator.initialize();

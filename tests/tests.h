@@ -189,21 +189,16 @@ read_test_parameters(const std::string        &filename,
   ContactDynamics::read_parameters(filename, prm);
 }
 
-// Runs a shipped parameter file (path relative to the repository) with some
-// entries replaced ({"Section/Entry", value}) and returns the columns of its
-// statistics.csv by name.
-// `inspect` sees the simulator at the end of the run. With `error`, a run
-// that stops with an exception returns what it wrote, and the message. On
-// several processes only the first one gets the columns.
-template <typename Simulator>
-std::map<std::string, std::vector<double>>
-run_shipped(const std::string                                      &file,
-            const std::vector<std::pair<std::string, std::string>> &changes,
-            const std::function<void(const Simulator &)> &inspect = {},
-            std::string                                  *error   = nullptr,
-            const MPI_Comm                                comm = MPI_COMM_WORLD)
+using ParameterChanges = std::vector<std::pair<std::string, std::string>>;
+
+// Reads a shipped parameter file (path relative to the repository) with
+// some entries replaced ({"Section/Entry", value}) into `prm`; returns the
+// output directory if it is among the changes.
+inline std::string
+read_shipped(const std::string        &file,
+             const ParameterChanges   &changes,
+             dealii::ParameterHandler &prm)
 {
-  dealii::ParameterHandler prm;
   ContactDynamics::read_parameters(std::string(SOURCE_DIR) + "/../" + file,
                                    prm);
   std::string directory;
@@ -219,6 +214,24 @@ run_shipped(const std::string                                      &file,
       if (sections.back() == "Output directory")
         directory = change.second;
     }
+  return directory;
+}
+
+// Runs a shipped parameter file with some entries replaced (read_shipped)
+// and returns the columns of its statistics.csv by name.
+// `inspect` sees the simulator at the end of the run. With `error`, a run
+// that stops with an exception returns what it wrote, and the message. On
+// several processes only the first one gets the columns.
+template <typename Simulator>
+std::map<std::string, std::vector<double>>
+run_shipped(const std::string                            &file,
+            const ParameterChanges                       &changes,
+            const std::function<void(const Simulator &)> &inspect = {},
+            std::string                                  *error   = nullptr,
+            const MPI_Comm                                comm = MPI_COMM_WORLD)
+{
+  dealii::ParameterHandler prm;
+  const std::string        directory = read_shipped(file, changes, prm);
   AssertThrow(!directory.empty(),
               dealii::ExcMessage("set Output/Output directory"));
   try
