@@ -7,8 +7,12 @@
 #include <contact_dynamics/scenes/scene_registry.h>
 #include <contact_dynamics/simulator.h>
 
+#include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstring>
 #include <exception>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -102,12 +106,27 @@ namespace ContactDynamics
     {
     public:
       void
-      scan(const std::string &filename, std::vector<std::string> &path)
+      scan(const std::string        &filename,
+           std::vector<std::string> &path,
+           const std::string        &included_from = "")
       {
+        const std::string from =
+          included_from.empty() ? "" : " (included from " + included_from + ")";
+        AssertThrow(!std::filesystem::is_directory(filename),
+                    ExcMessage("The parameter file '" + filename + "'" + from +
+                               " is a directory."));
         std::ifstream in(filename);
         AssertThrow(in,
                     ExcMessage("Cannot open the parameter file '" + filename +
-                               "'."));
+                               "'" + from + ": " + std::strerror(errno) + "."));
+        // an include cycle would recurse without end
+        const std::string canonical =
+          std::filesystem::weakly_canonical(filename).string();
+        AssertThrow(std::find(open.begin(), open.end(), canonical) ==
+                      open.end(),
+                    ExcMessage("The parameter file '" + filename + "'" + from +
+                               " is already being read: an include cycle."));
+        open.push_back(canonical);
         std::string  line, text;
         unsigned int number = 0, first = 0;
         while (std::getline(in, line))
@@ -127,6 +146,7 @@ namespace ContactDynamics
             statement(Utilities::trim(text), filename, first, path);
             text.clear();
           }
+        open.pop_back();
       }
 
       unsigned int n_set = 0;
@@ -155,6 +175,8 @@ namespace ContactDynamics
             c = ' ';
         while (text.find("  ") != std::string::npos)
           text.erase(text.find("  "), 1);
+        const std::string where =
+          "line " + std::to_string(number) + " of " + filename;
         if (keyword(text, "subsection"))
           path.push_back(Utilities::trim(text.substr(10)));
         else if (keyword(text, "end"))
@@ -163,7 +185,7 @@ namespace ContactDynamics
               path.pop_back();
           }
         else if (keyword(text, "include"))
-          scan(Utilities::trim(text.substr(7)), path);
+          scan(Utilities::trim(text.substr(7)), path, where);
         else if (keyword(text, "set") && text.find('=') != std::string::npos)
           {
             ++n_set;
@@ -171,19 +193,23 @@ namespace ContactDynamics
             for (const auto &p : path)
               name += p + "/";
             name += Utilities::trim(text.substr(3, text.find('=') - 3));
-            const std::string where =
-              "line " + std::to_string(number) + " of " + filename;
+            // a file may override what a file it included set (a base
+            // file and its variant); anything else set twice is a mistake
             const auto previous = seen.find(name);
-            AssertThrow(previous == seen.end(),
+            AssertThrow(previous == seen.end() ||
+                          previous->second.second > open.size(),
                         ExcMessage("The entry '" + name + "' is set twice: " +
-                                   previous->second + " and " + where +
+                                   previous->second.first + " and " + where +
                                    ". Set it once (the last value would "
-                                   "silently win)."));
-            seen[name] = where;
+                                   "silently win; a file may override only "
+                                   "what a file it includes sets)."));
+            seen[name] = {where, open.size()};
           }
       }
 
-      std::map<std::string, std::string> seen;
+      // entry -> (where it was set, include depth of that file)
+      std::map<std::string, std::pair<std::string, std::size_t>> seen;
+      std::vector<std::string>                                   open;
     };
   } // namespace
 

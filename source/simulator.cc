@@ -340,12 +340,24 @@ namespace ContactDynamics
                          "residual norms (" +
                          join(forces, "; ") + ")");
       }
+    // the initial conditions of every body: which one is not finite
+    // where is not known here
+    const auto initial = [&](const bool displacement) {
+      std::vector<std::string> entries;
+      for (const auto &body : bodies)
+        entries.push_back(
+          BodyParameters::subsection_name(body.name) +
+          (displacement ?
+             "/Initial displacement = " + body.initial_displacement :
+             "/Initial velocity = " + body.initial_velocity));
+      return std::string(displacement ? "an initial displacement" :
+                                        "an initial velocity") +
+             " not finite somewhere (" + join(entries, "; ") + ")";
+    };
     if (!std::isfinite(u.linfty_norm()))
-      causes.emplace_back(
-        "Body <name>/Initial displacement (not finite somewhere)");
+      causes.emplace_back(initial(true));
     if (!std::isfinite(v.linfty_norm()))
-      causes.emplace_back(
-        "Body <name>/Initial velocity (not finite somewhere)");
+      causes.emplace_back(initial(false));
     const auto finite = [](const std::map<types::global_dof_index, double> &m) {
       for (const auto &p : m)
         if (!std::isfinite(p.second))
@@ -928,6 +940,10 @@ namespace ContactDynamics
         ->write(dof_handler, *mechanics, u_out, v_out, time, step, fields);
       if (contact)
         contact_writer->write_surfaces(*contact, step);
+    });
+    // only once every process has written its piece
+    check_collectively(mpi_communicator, [&]() {
+      solution_writer->write_records(time, step);
     });
     last_vtu_step = step;
   }

@@ -225,6 +225,10 @@ namespace ContactDynamics
                         ExcMessage("In 'Contact/Monitored points', '" + text +
                                    "' is not a point 'x, y'."));
           }
+        AssertThrow(std::isfinite(monitored_points.back()[0]) &&
+                      std::isfinite(monitored_points.back()[1]),
+                    ExcMessage("In 'Contact/Monitored points', '" + text +
+                               "' is not a point 'x, y' of finite numbers."));
       }
   }
 
@@ -338,7 +342,8 @@ namespace ContactDynamics
                 << 0.1 * shortest
                 << " for this mesh; the default 1e-5 suits elements down "
                    "to 1e-4.";
-        AssertThrow(capture_tolerance <= 0.1 * shortest,
+        // (the bound itself is allowed; face lengths carry round-off)
+        AssertThrow(capture_tolerance <= 0.1 * shortest * (1 + 1e-10),
                     ExcMessage(message.str()));
       }
 

@@ -931,7 +931,7 @@ namespace ContactDynamics
     AssertThrow(contact.allow_initial_penetration,
                 ExcMessage(where.str() +
                            ". Pushing them apart would create energy. Move "
-                           "them apart (Body <name>/Initial displacement, "
+                           "them apart (a body's Initial displacement, "
                            "the mesh), or set Contact/Initial penetration = "
                            "allow to let the contact push them apart."));
     if (is_root(comm))

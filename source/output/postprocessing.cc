@@ -89,7 +89,17 @@ namespace ContactDynamics
         errno = 0;
         std::ofstream out(temporary);
         check_written(out, filename, temporary);
-        write(out);
+        try
+          {
+            write(out);
+          }
+        catch (...)
+          {
+            // deal.II's writers throw a generic ExcIO when the stream
+            // fails (a full disk): name the file and the reason instead
+            check_written(out, filename, temporary);
+            throw;
+          }
         out.flush();
         check_written(out, filename, temporary);
         out.close();
@@ -338,27 +348,49 @@ namespace ContactDynamics
               AssertThrow(false, ExcMessage(message.str()));
             }
 
-    const unsigned int n_processes = Utilities::MPI::n_mpi_processes(comm);
-    const std::string  base  = "solution-" + Utilities::int_to_string(step, 5);
-    const auto         piece = [&](const unsigned int p) {
-      return n_processes == 1 ? base + ".vtu" :
-                                        base + "." + std::to_string(p) + ".vtu";
-    };
-    const std::string name = piece(Utilities::MPI::this_mpi_process(comm));
-    write_file_atomically(directory + "/" + name, [&](std::ostream &out) {
-      data_out.write_vtu(out);
-    });
-    if (!is_root(comm))
-      return;
-    std::string record = name;
-    if (n_processes > 1)
+    write_file_atomically(directory + "/" +
+                            piece_name(step,
+                                       Utilities::MPI::this_mpi_process(comm)),
+                          [&](std::ostream &out) {
+                            data_out.write_vtu(out);
+                          });
+    // the record that joins the pieces, written once every piece is
+    pvtu_record.clear();
+    if (is_root(comm) && Utilities::MPI::n_mpi_processes(comm) > 1)
       {
         std::vector<std::string> pieces;
-        for (unsigned int p = 0; p < n_processes; ++p)
-          pieces.push_back(piece(p));
-        record = base + ".pvtu";
+        for (unsigned int p = 0; p < Utilities::MPI::n_mpi_processes(comm); ++p)
+          pieces.push_back(piece_name(step, p));
+        std::ostringstream record;
+        data_out.write_pvtu_record(record, pieces);
+        pvtu_record = record.str();
+      }
+  }
+
+  template <int dim>
+  std::string
+  SolutionWriter<dim>::piece_name(const unsigned int step,
+                                  const unsigned int process) const
+  {
+    const std::string base = "solution-" + Utilities::int_to_string(step, 5);
+    return Utilities::MPI::n_mpi_processes(comm) == 1 ?
+             base + ".vtu" :
+             base + "." + std::to_string(process) + ".vtu";
+  }
+
+  template <int dim>
+  void
+  SolutionWriter<dim>::write_records(const double time, const unsigned int step)
+  {
+    if (!is_root(comm))
+      return;
+    const unsigned int n_processes = Utilities::MPI::n_mpi_processes(comm);
+    std::string        record      = piece_name(step, 0);
+    if (n_processes > 1)
+      {
+        record = "solution-" + Utilities::int_to_string(step, 5) + ".pvtu";
         write_file_atomically(directory + "/" + record, [&](std::ostream &out) {
-          data_out.write_pvtu_record(out, pieces);
+          out << pvtu_record;
         });
       }
     auto listed = records;

@@ -96,7 +96,8 @@ namespace ContactDynamics
      * ghost entries of the locally owned cells. Writes nothing and throws,
      * naming the field, the place and the time, if a value is not finite
      * (an element inverted at a corner gives NaN stresses there). Local:
-     * call it on every process inside check_collectively().
+     * call it on every process inside check_collectively(), then
+     * write_records() once every piece is known to be written.
      */
     void
     write(const DoFHandler<dim>     &dof_handler,
@@ -108,11 +109,25 @@ namespace ContactDynamics
           const std::vector<std::pair<const VectorType *, std::string>>
             &nodal_fields = {});
 
+    /**
+     * The first process adds the step of the last write() to solution.pvd
+     * (through the .pvtu record on several processes), so that the records
+     * never list a piece that was not written. Call it on every process
+     * inside check_collectively().
+     */
+    void
+    write_records(const double time, const unsigned int step);
+
   private:
+    /** solution-NNNNN.vtu, or solution-NNNNN.P.vtu on several processes. */
+    std::string
+    piece_name(const unsigned int step, const unsigned int process) const;
+
     MPI_Comm                                    comm;
     std::string                                 directory;
     std::vector<std::string>                    extra_names;
     std::vector<std::pair<double, std::string>> records;
+    std::string pvtu_record; // of the last write(), first process only
   };
 } // namespace ContactDynamics
 
