@@ -343,15 +343,15 @@ main()
         check_range(variant + ": largest penetration / h", penetration / h, 0., 0.13);
 
       // the lowest tool node's pressure in [0.3, end]: smoothness and spectrum
+      std::vector<double> t, p;
+      window(history.at("time"),
+             history.at("pressure(1.2 4.02)"),
+             0.3,
+             end_time,
+             t,
+             p);
       if (end_time > 0.5)
         {
-          std::vector<double> t, p;
-          window(history.at("time"),
-                 history.at("pressure(1.2 4.02)"),
-                 0.3,
-                 end_time,
-                 t,
-                 p);
           const double p_mean = mean(p);
           double       d2     = 0;
           for (unsigned int i = 1; i + 1 < p.size(); ++i)
@@ -372,13 +372,6 @@ main()
         }
       if (end_time > 0.9)
         {
-          std::vector<double> t, p;
-          window(history.at("time"),
-                 history.at("pressure(1.2 4.02)"),
-                 0.3,
-                 end_time,
-                 t,
-                 p);
           const double p_mean = mean(p);
           const auto   r      = detrended(t, p);
           double       f_max = 0, a_max = 0;
