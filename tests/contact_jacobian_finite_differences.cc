@@ -191,17 +191,22 @@ end
   }
   // |J d - FD| / |J d| on the multiplier rows and on the force rows (the
   // displacement rows that the multipliers reach) separately
+  // `held`: one dynamic step first, so that the nodes in contact hold
+  // their gaps (persistency rows) in the checked state
   void
   check_contact_rows(const std::string &name,
                      const std::string &text,
                      const double       lambda_scale,
-                     const double       t_scale)
+                     const double       t_scale,
+                     const bool         held = false)
   {
     ParameterHandler prm;
     read_test_parameters("rows.prm", text, prm);
     std::ostringstream            screen;
     ContactDynamics::Simulator<2> simulator(prm, screen);
     simulator.initialize();
+    if (held)
+      check_true(name + ": first step converges", simulator.advance(0.01));
     const auto &constraints = simulator.get_constraints();
     const auto  tangential =
       DoFTools::extract_dofs(simulator.get_dof_handler(),
@@ -259,15 +264,18 @@ end
     const auto *contact =
       dynamic_cast<const ContactDynamics::SurfaceContact<2> *>(
         simulator.get_contact());
-    unsigned int n_active = 0, n_stick = 0;
+    unsigned int n_active = 0, n_stick = 0, n_held = 0;
     for (const auto &node : contact->node_states(0))
       {
         n_active += node.active;
         n_stick += node.stick;
+        n_held += node.active && node.persistent;
       }
     deallog << name << ": multiplier rows " << n_rows[0] << ", force rows "
             << n_rows[1] << ", active nodes " << n_active << ", stick nodes "
             << n_stick << std::endl;
+    if (held)
+      check_true(name + ": held nodes in the checked state", n_held >= 3);
     check_close(name + ": multiplier rows |J d - FD| / |J d|",
                 std::sqrt(error[0] / norm[0]),
                 0.,
@@ -279,7 +287,9 @@ end
   }
 
   std::string
-  rows_parameters(const std::string &scene, const std::string &friction)
+  rows_parameters(const std::string &scene,
+                  const std::string &friction,
+                  const std::string &scheme = "quasi-static")
   {
     const bool hertz = scene == "hertz";
     return std::string(R"(
@@ -308,7 +318,9 @@ subsection Boundary conditions
            (hertz ? "block_bottom" : "lower_bottom") + R"(: xy: 0
 end
 subsection Time integration
-  set Scheme = quasi-static
+  set Scheme = )" +
+           scheme +
+           R"(
   set Time step = 0.01
 end
 subsection Contact
@@ -355,6 +367,13 @@ check_contact_rows_all()
                          200,
                          500);
     }
+  // dynamic, after one step: the persistency rows of held nodes on the
+  // curved interface (the Newmark rate of the whole weighted gap)
+  check_contact_rows("mortar rows, curved (Hertz), held (persistency)",
+                     rows_parameters("hertz", "0", "newmark"),
+                     200,
+                     0,
+                     true);
 }
 
 void
