@@ -92,7 +92,7 @@ run_one() { # benchmark/variant
     # the simulator's message, or the last lines of the log
     local log
     log=$(grep -v '^Step ' "$dir/run.log" | tr '\n' ' ' | sed 's/  */ /g')
-    reason=$(echo "$log" | sed -n 's/.*Error: \(.*\)\. The run stops here.*/\1/p')
+    reason=$(echo "$log" | sed -n 's/.*Error: \(.*\)\. The run stops \(here\|at step\).*/\1/p')
     [ -n "$reason" ] || reason=$(echo "$log" | tail -c 300)
   fi
   {

@@ -93,7 +93,7 @@ def run_one(key, value, args):
         text = " ".join(l for l in (out / "run.log").read_text(errors="replace").splitlines()
                         if not l.startswith("Step "))
         text = re.sub(r"\s+", " ", text)
-        m = re.search(r"Error: (.*?)\. The run stops here", text)
+        m = re.search(r"Error: (.*?)\. The run stops (?:here|at step)", text)
         reason = m.group(1) if m else (text[-300:].strip() or f"exit code {rc}")
     (out / "run_status.txt").write_text(
         f"status = {status}\nreason = {reason}\nwall_time_s = {wall:.1f}\n"
