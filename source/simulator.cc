@@ -605,22 +605,115 @@ namespace ContactDynamics
   }
 
   template <int dim>
+  void
+  Simulator<dim>::setup_velocity_update()
+  {
+    // the mass matrix, once whole (M) and once on the free displacements
+    // (M_FF: prescribed dofs and multipliers constrained); constant in a
+    // total Lagrangian description
+    velocity_update_constraints.copy_from(increment_constraints);
+    std::vector<bool> multipliers(fe->n_components(), true);
+    for (unsigned int d = 0; d < dim; ++d)
+      multipliers[d] = false;
+    for (const auto i : union_over_processes(
+           DoFTools::extract_dofs(dof_handler, ComponentMask(multipliers)),
+           mpi_communicator))
+      if (!velocity_update_constraints.is_constrained(i))
+        velocity_update_constraints.add_line(i);
+    velocity_update_constraints.close();
+    const unsigned int           n_components = fe->n_components();
+    Table<2, DoFTools::Coupling> coupling(n_components, n_components);
+    for (unsigned int c = 0; c < n_components; ++c)
+      for (unsigned int d = 0; d < n_components; ++d)
+        coupling(c, d) =
+          (c < dim && d < dim) ? DoFTools::always : DoFTools::none;
+    DynamicSparsityPattern dsp(locally_relevant);
+    DoFTools::make_sparsity_pattern(dof_handler, coupling, dsp);
+    for (const auto i : locally_owned)
+      dsp.add(i, i);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               locally_owned,
+                                               mpi_communicator,
+                                               locally_relevant);
+    VectorType  unused(residual);
+    const auto &u_g = ghosted(u, u_ghost);
+    const auto &v_g = ghosted(v, v_ghost);
+    mass_free.reinit(locally_owned, locally_owned, dsp, mpi_communicator);
+    mechanics->assemble_initial_acceleration_system(
+      u_g, v_g, velocity_update_constraints, mass_free, unused);
+    mass_whole.reinit(mass_free);
+    mechanics->assemble_initial_acceleration_system(
+      u_g, v_g, AffineConstraints<double>(), mass_whole, unused);
+    mass_free_preconditioner.initialize(mass_free);
+  }
+
+  template <int dim>
   double
   Simulator<dim>::apply_velocity_update()
   {
     const double work =
       integrator.is_dynamic() ? contact->velocity_update_request() : 0.;
-    if (work == 0)
+    const VectorType *force = contact->velocity_update_force();
+    if (work == 0 || force == nullptr)
       return 0;
-    // one factor 1 + s for the velocities w of every free degree of
-    // freedom (the prescribed ones keep theirs):
-    // K(v + s w) = K(v) + s b + s^2 K(w) = K(v) - work, the smaller root
-    // (the largest removal if the step created more than w can carry)
-    VectorType direction(v_new);
-    for (const auto i : direction.locally_owned_elements())
-      if (increment_constraints.is_constrained(i))
+    TimerOutput::Scope t(*timer, "velocity update");
+    if (mass_free.m() == 0)
+      setup_velocity_update();
+
+    // the bodies the step's contact impulse acted on: only their free
+    // velocities change
+    std::vector<double>                  touched(bodies.size(), 0.);
+    std::vector<types::global_dof_index> cell_dofs(fe->n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(cell_dofs);
+          for (const auto i : cell_dofs)
+            if (locally_owned.is_element(i) && (*force)(i) != 0)
+              touched[cell->material_id()] = 1;
+        }
+    Utilities::MPI::sum(touched, mpi_communicator, touched);
+
+    // The velocity change of least kinetic norm that gives the bodies the
+    // energy K(v) - work (the orthogonal projection onto the energy level,
+    // Hairer, Lubich and Wanner, Geometric Numerical Integration, IV.4):
+    // min 1/2 dv.M dv with K(v + dv) = K(v) - work over the free dofs F
+    // gives dv_F = s w with w = v_F + M_FF^-1 M_FC v_C (C: prescribed).
+    VectorType prescribed(v_new), coupling(v_new), direction(v_new);
+    for (const auto i : locally_owned)
+      if (!velocity_update_constraints.is_constrained(i))
+        prescribed(i) = 0;
+      else
         direction(i) = 0;
+    prescribed.compress(VectorOperation::insert);
     direction.compress(VectorOperation::insert);
+    mass_whole.vmult(coupling, prescribed);
+    velocity_update_constraints.set_zero(coupling);
+    if (coupling.l2_norm() > 0)
+      {
+        VectorType    correction(coupling);
+        SolverControl control(1000,
+                              1e-13 * coupling.l2_norm(),
+                              false,
+                              false);
+        TrilinosWrappers::SolverCG cg(control);
+        correction = 0;
+        cg.solve(mass_free, correction, coupling, mass_free_preconditioner);
+        velocity_update_constraints.set_zero(correction);
+        direction += correction;
+      }
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && touched[cell->material_id()] == 0.)
+        {
+          cell->get_dof_indices(cell_dofs);
+          for (const auto i : cell_dofs)
+            if (locally_owned.is_element(i))
+              direction(i) = 0;
+        }
+    direction.compress(VectorOperation::insert);
+
+    // K(v + s w) = K(v) + s b + s^2 K(w) = K(v) - work: the smaller root,
+    // or the largest removal if the step created more than w can carry
     const double k_w =
       mechanics->kinetic_energy(ghosted(direction, scratch_ghost[0]));
     if (!(k_w > 0))

@@ -12,6 +12,7 @@
 #include <deal.II/fe/fe_system.h>
 
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_precondition.h>
 
 #include <contact_dynamics/contact/contact_formulation.h>
 #include <contact_dynamics/mechanics/bodies.h>
@@ -184,11 +185,14 @@ namespace ContactDynamics
     apply_initial_conditions();
     void
     set_trial_velocity_and_acceleration();
+    /** The mass matrices of the velocity update, at its first use. */
+    void
+    setup_velocity_update();
     /**
-     * Stabilization 'velocity update': after a converged step, scales the
-     * velocities of the free degrees of freedom so that the step's normal
-     * contact work returns to kinetic energy; returns the kinetic energy
-     * change.
+     * Stabilization 'velocity update': after a converged step, the least
+     * (kinetic norm) change of the free velocities of the bodies the
+     * contact acted on that returns the step's normal contact work to
+     * kinetic energy; returns the kinetic energy change.
      */
     double
     apply_velocity_update();
@@ -250,6 +254,10 @@ namespace ContactDynamics
     IndexSet                             locally_relevant;
     AffineConstraints<double>            increment_constraints;
     std::unique_ptr<SolidMechanics<dim>> mechanics;
+    // stabilization 'velocity update'
+    MatrixType                           mass_whole, mass_free;
+    AffineConstraints<double>            velocity_update_constraints;
+    TrilinosWrappers::PreconditionJacobi mass_free_preconditioner;
 
     // state at t_n, the trial state at t_{n+1}, and work vectors
     VectorType u, v, a, u_new, v_new, a_new;

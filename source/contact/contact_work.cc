@@ -14,8 +14,11 @@ namespace ContactDynamics
     this->owned_dofs = owned_dofs;
     this->dofs       = dofs;
     this->friction   = friction;
-    for (auto *v :
-         {&force, &force_committed, &friction_force, &friction_force_committed})
+    for (auto *v : {&force,
+                    &force_committed,
+                    &friction_force,
+                    &friction_force_committed,
+                    &mean_normal_force})
       v->reinit(owned_dofs, comm);
     contact_work           = 0;
     frictional_dissipation = 0;
@@ -56,6 +59,14 @@ namespace ContactDynamics
                         ArrayView<double>(sums, 2));
     contact_work += sums[0];
     last_normal_work = sums[0] - sums[1];
+    mean_normal_force = force;
+    mean_normal_force += force_committed;
+    if (friction)
+      {
+        mean_normal_force -= friction_force;
+        mean_normal_force -= friction_force_committed;
+      }
+    mean_normal_force *= 0.5;
     if (friction)
       {
         frictional_dissipation -= sums[1];

@@ -119,11 +119,14 @@ namespace ContactDynamics
       "'velocity persistency': the paper's velocity-level condition -int "
       "psi (v_s - v_p).n = 0, exact on flat surfaces only (drift on curved "
       "sliding ones). 'velocity update': as 'persistency', then after each "
-      "step one factor on the velocities of all free degrees of freedom "
-      "returns the step's normal contact work to kinetic energy, so "
-      "frictionless impacts keep the energy exactly (in the spirit of "
-      "Laursen and Love 2002; it acts on every moving body and stops them "
-      "when they carry less kinetic energy than the work to return). "
+      "step the velocities are projected onto the energy the step should "
+      "have: the change of least kinetic norm of the free velocities of the "
+      "bodies the contact acted on returns the step's normal contact work "
+      "to kinetic energy (Hairer, Lubich and Wanner, Geometric Numerical "
+      "Integration, IV.4), so frictionless impacts keep the energy exactly "
+      "and penetrations are those of 'persistency'; it changes momentum, "
+      "and stops the bodies when they carry less kinetic energy than the "
+      "work to return (slow sliding). "
       "'none': the gap is enforced at every step ('static').");
     prm.declare_entry("Capture tolerance",
                       default_text(defaults.capture_tolerance),

@@ -231,6 +231,17 @@ namespace ContactDynamics
       return 0;
     }
 
+    /**
+     * Stabilization 'velocity update': the step's mean normal contact force
+     * (as in the residual), which says on which bodies the contact acted;
+     * nullptr if none.
+     */
+    virtual const VectorType *
+    velocity_update_force() const
+    {
+      return nullptr;
+    }
+
     /** The kinetic energy the velocity correction added. */
     virtual void
     add_velocity_update_work(const double)

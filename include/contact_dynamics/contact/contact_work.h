@@ -71,6 +71,18 @@ namespace ContactDynamics
       return last_normal_work;
     }
 
+    /**
+     * The mean normal (frictionless) contact force of the last committed
+     * step, 1/2 (f_n + f_{n+1}) without the friction part, as the residual
+     * carries it (minus the force on the bodies): the direction of the
+     * trapezoidal rule's contact impulse.
+     */
+    const TrilinosWrappers::MPI::Vector &
+    step_normal_force() const
+    {
+      return mean_normal_force;
+    }
+
     /** Kinetic energy a velocity correction gave the bodies at contact. */
     void
     add_impulse_work(const double work)
@@ -101,6 +113,7 @@ namespace ContactDynamics
     // zero before the first step: the trapezoidal rule starts from no force
     TrilinosWrappers::MPI::Vector force, force_committed;
     TrilinosWrappers::MPI::Vector friction_force, friction_force_committed;
+    TrilinosWrappers::MPI::Vector mean_normal_force;
     double                        contact_work           = 0;
     double                        frictional_dissipation = 0;
     double                        last_normal_work       = 0;

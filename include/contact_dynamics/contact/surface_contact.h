@@ -152,6 +152,12 @@ namespace ContactDynamics
                0.;
     }
 
+    const VectorType *
+    velocity_update_force() const override
+    {
+      return &work.step_normal_force();
+    }
+
     void
     add_velocity_update_work(const double work_done) override
     {
