@@ -18,6 +18,7 @@
 #include <contact_dynamics/parameters.h>
 #include <contact_dynamics/simulator.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <iomanip>
@@ -790,6 +791,32 @@ namespace ContactDynamics
     increment = du;
     increment_constraints.set_zero(increment);
     u_new += increment;
+  }
+
+  template <int dim>
+  std::vector<MultiplierGroup>
+  Simulator<dim>::multiplier_groups() const
+  {
+    // a group's dofs are unknowns of this process (a vertex's dofs have one
+    // owner); a multiplier held by a constraint is no unknown
+    std::vector<MultiplierGroup> groups;
+    for (auto group : contact->multiplier_groups())
+      {
+        auto &m = group.multipliers;
+        m.erase(std::remove_if(m.begin(),
+                               m.end(),
+                               [&](const auto i) {
+                                 return increment_constraints.is_constrained(i);
+                               }),
+                m.end());
+        bool owned = true;
+        for (const auto *dofs : {&group.displacements, &m})
+          for (const auto i : *dofs)
+            owned = owned && locally_owned.is_element(i);
+        if (owned && !m.empty())
+          groups.push_back(std::move(group));
+      }
+    return groups;
   }
 
   template <int dim>

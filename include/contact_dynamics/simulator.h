@@ -157,6 +157,14 @@ namespace ContactDynamics
     void
     apply_update(const VectorType &increment) override;
 
+    bool
+    has_multipliers() const override
+    {
+      return contact != nullptr;
+    }
+    std::vector<MultiplierGroup>
+    multiplier_groups() const override;
+
     double
     iterate_norm() const override
     {

@@ -392,6 +392,27 @@ namespace ContactDynamics
   }
 
   template <int dim>
+  std::vector<MultiplierGroup>
+  SurfaceContact<dim>::multiplier_groups() const
+  {
+    std::vector<MultiplierGroup>      groups;
+    std::set<types::global_dof_index> seen;
+    for (const auto &pair : pairs)
+      for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
+        if (pair.owned_node[j] && seen.insert(pair.secondary.dofs[j][dim]).second)
+          {
+            MultiplierGroup group;
+            for (unsigned int d = 0; d < dim; ++d)
+              group.displacements.push_back(pair.secondary.dofs[j][d]);
+            group.multipliers.push_back(pair.secondary.dofs[j][dim]);
+            if (pair.friction_coefficient > 0)
+              group.multipliers.push_back(pair.secondary.dofs[j][dim + 1]);
+            groups.push_back(std::move(group));
+          }
+    return groups;
+  }
+
+  template <int dim>
   unsigned int
   SurfaceContact<dim>::n_owned_nodes(const unsigned int pair) const
   {

@@ -13,6 +13,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <contact_dynamics/solvers/multiplier_condensation.h>
 #include <contact_dynamics/mechanics/time_integrator.h>
 #include <contact_dynamics/scenes/scene_layout.h>
 
@@ -155,6 +156,17 @@ namespace ContactDynamics
              VectorType                      &residual,
              MatrixType                      &jacobian,
              VectorType                      &residual_full) = 0;
+
+    /**
+     * Per secondary node this process owns: its displacement dofs and its
+     * multiplier dofs (normal; tangential with friction), for the
+     * condensation of the multipliers.
+     */
+    virtual std::vector<MultiplierGroup>
+    multiplier_groups() const
+    {
+      return {};
+    }
 
     /** Degrees of freedom whose predictor is their old value. */
     virtual const std::vector<types::global_dof_index> &

@@ -152,6 +152,9 @@ namespace ContactDynamics
                0.;
     }
 
+    std::vector<MultiplierGroup>
+    multiplier_groups() const override;
+
     const VectorType *
     velocity_update_force() const override
     {

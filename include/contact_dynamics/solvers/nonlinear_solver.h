@@ -5,6 +5,7 @@
 #include <deal.II/base/config.h>
 
 #include <contact_dynamics/solvers/linear_solver.h>
+#include <contact_dynamics/solvers/multiplier_condensation.h>
 
 #include <iosfwd>
 #include <string>
@@ -48,6 +49,23 @@ namespace ContactDynamics
     converged() const
     {
       return true;
+    }
+
+    /**
+     * The system has contact multipliers that condensation could eliminate
+     * (the same answer on every process).
+     */
+    virtual bool
+    has_multipliers() const
+    {
+      return false;
+    }
+
+    /** The multipliers of the secondary nodes this process owns. */
+    virtual std::vector<MultiplierGroup>
+    multiplier_groups() const
+    {
+      return {};
     }
 
     /** l2 norm of the current iterate, for the step tolerance. */
@@ -121,7 +139,8 @@ namespace ContactDynamics
 
     /** Solves J du = -R (timed); on failure, records it (false). */
     bool
-    solve_linear_system(const TrilinosWrappers::SparseMatrix &jacobian,
+    solve_linear_system(const NonlinearSystem                &system,
+                        const TrilinosWrappers::SparseMatrix &jacobian,
                         TrilinosWrappers::MPI::Vector        &residual,
                         TrilinosWrappers::MPI::Vector        &increment,
                         const double                          residual_norm,
@@ -136,6 +155,9 @@ namespace ContactDynamics
     bool         verbose_           = false;
     TimerOutput *timer              = nullptr;
     LinearSolver linear_solver;
+    bool         condense_multipliers = false;
+    // built anew for every linear solve with contact multipliers
+    MultiplierCondensation condensation;
   };
 } // namespace ContactDynamics
 

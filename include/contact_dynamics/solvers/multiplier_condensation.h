@@ -1,0 +1,101 @@
+// Static condensation of the contact multipliers from a Newton system: with
+// a diagonal mortar matrix D (dual basis) or nodal multipliers (node-to-
+// segment), the multipliers of a secondary node appear only in that node's
+// own displacement rows, so they can be eliminated node by node (Popp,
+// Gitterle, Gee and Wall 2010). The condensed system has the displacement
+// increments as its only unknowns.
+#ifndef contact_dynamics_solvers_multiplier_condensation_h
+#define contact_dynamics_solvers_multiplier_condensation_h
+
+#include <deal.II/base/types.h>
+
+#include <memory>
+#include <vector>
+
+DEAL_II_NAMESPACE_OPEN
+namespace TrilinosWrappers
+{
+  class SparseMatrix;
+  namespace MPI
+  {
+    class Vector;
+  }
+} // namespace TrilinosWrappers
+DEAL_II_NAMESPACE_CLOSE
+
+namespace ContactDynamics
+{
+  using namespace dealii;
+
+  /**
+   * The unknowns of one secondary node owned by this process: its
+   * displacement dofs and the multipliers (normal, tangential) that are
+   * unknowns of the Newton system (not constrained).
+   */
+  struct MultiplierGroup
+  {
+    std::vector<types::global_dof_index> displacements;
+    std::vector<types::global_dof_index> multipliers;
+  };
+
+  /**
+   * For a Newton system J dx = -r, with the unknowns x = (u, lambda):
+   * per group g the rows of its displacements, J_s u du + B dlambda_g =
+   * -r_s with the dim x k block B = J[s, lambda_g], give dlambda_g =
+   * E (-r_s - J_s du), E = R^-1 Q_1^T from B = Q_1 R. Every other row gets
+   * its multiplier columns replaced by this; the rows of the group's
+   * displacements are replaced by the k condensed multiplier rows and by
+   * the dim - k rotated displacement rows Q_2^T (J_s du + r_s) = 0, placed
+   * on the displacement rows so that their diagonals are large (an
+   * iterative solver and its preconditioner see a displacement-only,
+   * elasticity-like matrix); the multiplier rows become identity rows.
+   * A group whose block B is rank deficient (a secondary node held by
+   * Dirichlet conditions) stays uncondensed.
+   */
+  class MultiplierCondensation
+  {
+  public:
+    MultiplierCondensation();
+    ~MultiplierCondensation();
+
+    /**
+     * Builds the condensed matrix and right-hand side from `jacobian` and
+     * `rhs` (J dx = -rhs). Collective.
+     */
+    void
+    condense(const TrilinosWrappers::SparseMatrix &jacobian,
+             const TrilinosWrappers::MPI::Vector  &rhs,
+             const std::vector<MultiplierGroup>   &groups);
+
+    const TrilinosWrappers::SparseMatrix &
+    matrix() const;
+
+    const TrilinosWrappers::MPI::Vector &
+    rhs() const;
+
+    /**
+     * `solution` holds the displacement increments of the condensed
+     * system (zeros at the condensed multipliers): sets the multiplier
+     * increments. Collective.
+     */
+    void
+    recover(TrilinosWrappers::MPI::Vector &solution) const;
+
+    /** Multipliers eliminated in the last condense() (all processes). */
+    unsigned int
+    n_condensed() const
+    {
+      return n_condensed_multipliers;
+    }
+
+  private:
+    struct Elimination;
+    std::unique_ptr<TrilinosWrappers::SparseMatrix> condensed_matrix;
+    std::unique_ptr<TrilinosWrappers::MPI::Vector>  condensed_rhs;
+    // dlambda_m = -e_m - F_m du for the owned condensed multipliers
+    std::vector<Elimination> eliminations;
+    unsigned int             n_condensed_multipliers = 0;
+  };
+} // namespace ContactDynamics
+
+#endif
