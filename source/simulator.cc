@@ -19,6 +19,7 @@
 #include <contact_dynamics/simulator.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <csignal>
 #include <iomanip>
@@ -179,6 +180,47 @@ namespace ContactDynamics
                                                  output_parameters.directory);
         });
       }
+
+    {
+      // the rigid-body modes of each body, for an algebraic multigrid:
+      // translations and rotations about the origin (reference positions)
+      const unsigned int n_rotations = dim == 2 ? 1 : 3;
+      const unsigned int per_body    = dim + n_rotations;
+      std::vector<std::vector<double>> modes(
+        per_body * bodies.size(),
+        std::vector<double>(locally_owned.n_elements(), 0.));
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const Point<dim> &x     = cell->vertex(v);
+              const unsigned int first = per_body * cell->material_id();
+              std::array<types::global_dof_index, dim> dofs;
+              for (unsigned int d = 0; d < dim; ++d)
+                dofs[d] = cell->vertex_dof_index(v, d);
+              if (!locally_owned.is_element(dofs[0]))
+                continue;
+              std::array<unsigned int, dim> local;
+              for (unsigned int d = 0; d < dim; ++d)
+                local[d] = locally_owned.index_within_set(dofs[d]);
+              for (unsigned int d = 0; d < dim; ++d)
+                modes[first + d][local[d]] = 1;
+              if (dim == 2)
+                {
+                  modes[first + 2][local[0]] = -x[1];
+                  modes[first + 2][local[1]] = x[0];
+                }
+              else
+                for (unsigned int r = 0; r < 3; ++r)
+                  {
+                    // rotation about axis r: e_r x x
+                    const unsigned int a = (r + 1) % 3, b = (r + 2) % 3;
+                    modes[first + dim + r][local[a]] = -x[b];
+                    modes[first + dim + r][local[b]] = x[a];
+                  }
+            }
+      newton.set_near_null_space(std::move(modes), fe->n_components());
+    }
 
     // Dirichlet degrees of freedom: Newton increments vanish there; so do
     // the multipliers the contact formulation does not use.
@@ -609,19 +651,8 @@ namespace ContactDynamics
   void
   Simulator<dim>::setup_velocity_update()
   {
-    // the mass matrix, once whole (M) and once on the free displacements
-    // (M_FF: prescribed dofs and multipliers constrained); constant in a
-    // total Lagrangian description
-    velocity_update_constraints.copy_from(increment_constraints);
-    std::vector<bool> multipliers(fe->n_components(), true);
-    for (unsigned int d = 0; d < dim; ++d)
-      multipliers[d] = false;
-    for (const auto i : union_over_processes(
-           DoFTools::extract_dofs(dof_handler, ComponentMask(multipliers)),
-           mpi_communicator))
-      if (!velocity_update_constraints.is_constrained(i))
-        velocity_update_constraints.add_line(i);
-    velocity_update_constraints.close();
+    // the consistent mass matrix M (constant in a total Lagrangian
+    // description) and its row sums, the lumped masses
     const unsigned int           n_components = fe->n_components();
     Table<2, DoFTools::Coupling> coupling(n_components, n_components);
     for (unsigned int c = 0; c < n_components; ++c)
@@ -630,22 +661,23 @@ namespace ContactDynamics
           (c < dim && d < dim) ? DoFTools::always : DoFTools::none;
     DynamicSparsityPattern dsp(locally_relevant);
     DoFTools::make_sparsity_pattern(dof_handler, coupling, dsp);
-    for (const auto i : locally_owned)
+    for (const auto i : locally_relevant)
       dsp.add(i, i);
     SparsityTools::distribute_sparsity_pattern(dsp,
                                                locally_owned,
                                                mpi_communicator,
                                                locally_relevant);
-    VectorType  unused(residual);
-    const auto &u_g = ghosted(u, u_ghost);
-    const auto &v_g = ghosted(v, v_ghost);
-    mass_free.reinit(locally_owned, locally_owned, dsp, mpi_communicator);
-    mechanics->assemble_initial_acceleration_system(
-      u_g, v_g, velocity_update_constraints, mass_free, unused);
-    mass_whole.reinit(mass_free);
-    mechanics->assemble_initial_acceleration_system(
-      u_g, v_g, AffineConstraints<double>(), mass_whole, unused);
-    mass_free_preconditioner.initialize(mass_free);
+    VectorType unused(residual);
+    mass_matrix.reinit(locally_owned, locally_owned, dsp, mpi_communicator);
+    mechanics->assemble_initial_acceleration_system(ghosted(u, u_ghost),
+                                                    ghosted(v, v_ghost),
+                                                    AffineConstraints<double>(),
+                                                    mass_matrix,
+                                                    unused);
+    VectorType ones(residual);
+    ones = 1.;
+    lumped_mass.reinit(residual);
+    mass_matrix.vmult(lumped_mass, ones);
   }
 
   template <int dim>
@@ -658,7 +690,7 @@ namespace ContactDynamics
     if (work == 0 || force == nullptr)
       return 0;
     TimerOutput::Scope t(*timer, "velocity update");
-    if (mass_free.m() == 0)
+    if (mass_matrix.m() == 0)
       setup_velocity_update();
 
     // the bodies the step's contact impulse acted on: only their free
@@ -675,34 +707,20 @@ namespace ContactDynamics
         }
     Utilities::MPI::sum(touched, mpi_communicator, touched);
 
-    // The velocity change of least kinetic norm that gives the bodies the
-    // energy K(v) - work (the orthogonal projection onto the energy level,
-    // Hairer, Lubich and Wanner, Geometric Numerical Integration, IV.4):
-    // min 1/2 dv.M dv with K(v + dv) = K(v) - work over the free dofs F
-    // gives dv_F = s w with w = v_F + M_FF^-1 M_FC v_C (C: prescribed).
-    VectorType prescribed(v_new), coupling(v_new), direction(v_new);
+    // Hairer, Lubich and Wanner's standard projection (Geometric Numerical
+    // Integration, IV.4) of the velocities onto the energy the step should
+    // end with, in the metric of the lumped mass matrix D: along the
+    // gradient of the kinetic energy, w = D^-1 M v, on the free dofs of
+    // those bodies (w is v for a rigid motion, also next to a driven
+    // boundary, where the consistent metric would add a mesh-scale
+    // oscillation)
+    VectorType direction(v_new);
+    mass_matrix.vmult(direction, v_new);
     for (const auto i : locally_owned)
-      if (!velocity_update_constraints.is_constrained(i))
-        prescribed(i) = 0;
-      else
-        direction(i) = 0;
-    prescribed.compress(VectorOperation::insert);
-    direction.compress(VectorOperation::insert);
-    mass_whole.vmult(coupling, prescribed);
-    velocity_update_constraints.set_zero(coupling);
-    if (coupling.l2_norm() > 0)
-      {
-        VectorType    correction(coupling);
-        SolverControl control(1000,
-                              1e-13 * coupling.l2_norm(),
-                              false,
-                              false);
-        TrilinosWrappers::SolverCG cg(control);
-        correction = 0;
-        cg.solve(mass_free, correction, coupling, mass_free_preconditioner);
-        velocity_update_constraints.set_zero(correction);
-        direction += correction;
-      }
+      direction(i) = (increment_constraints.is_constrained(i) ||
+                      !(lumped_mass(i) > 0)) ?
+                       0. :
+                       direction(i) / lumped_mass(i);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && touched[cell->material_id()] == 0.)
         {

@@ -12,7 +12,6 @@
 #include <deal.II/fe/fe_system.h>
 
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/trilinos_precondition.h>
 
 #include <contact_dynamics/contact/contact_formulation.h>
 #include <contact_dynamics/mechanics/bodies.h>
@@ -193,14 +192,15 @@ namespace ContactDynamics
     apply_initial_conditions();
     void
     set_trial_velocity_and_acceleration();
-    /** The mass matrices of the velocity update, at its first use. */
+    /** The mass matrix of the velocity update, at its first use. */
     void
     setup_velocity_update();
     /**
-     * Stabilization 'velocity update': after a converged step, the least
-     * (kinetic norm) change of the free velocities of the bodies the
-     * contact acted on that returns the step's normal contact work to
-     * kinetic energy; returns the kinetic energy change.
+     * Stabilization 'velocity update': after a converged step, projects
+     * the free velocities of the bodies the contact acted on along the
+     * gradient of the kinetic energy (lumped-mass metric) so that the
+     * step's normal contact work returns to kinetic energy; returns the
+     * kinetic energy change.
      */
     double
     apply_velocity_update();
@@ -262,10 +262,9 @@ namespace ContactDynamics
     IndexSet                             locally_relevant;
     AffineConstraints<double>            increment_constraints;
     std::unique_ptr<SolidMechanics<dim>> mechanics;
-    // stabilization 'velocity update'
-    MatrixType                           mass_whole, mass_free;
-    AffineConstraints<double>            velocity_update_constraints;
-    TrilinosWrappers::PreconditionJacobi mass_free_preconditioner;
+    // stabilization 'velocity update': the mass matrix and its row sums
+    MatrixType mass_matrix;
+    VectorType lumped_mass;
 
     // state at t_n, the trial state at t_{n+1}, and work vectors
     VectorType u, v, a, u_new, v_new, a_new;

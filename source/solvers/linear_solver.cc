@@ -6,6 +6,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <Teuchos_ParameterList.hpp>
 #include <contact_dynamics/parameters.h>
 #include <contact_dynamics/solvers/linear_solver.h>
 
@@ -16,7 +17,8 @@ namespace ContactDynamics
     const Selection<LinearSolver::Type> solver_names{
       {LinearSolver::Type::klu, "KLU"},
       {LinearSolver::Type::mumps, "MUMPS"},
-      {LinearSolver::Type::gmres, "GMRES"}};
+      {LinearSolver::Type::gmres, "GMRES"},
+      {LinearSolver::Type::amg, "AMG"}};
   } // namespace
 
   LinearSolver::LinearSolver() = default;
@@ -38,8 +40,13 @@ namespace ContactDynamics
       "GMRES is iterative, preconditioned by additive Schwarz with an exact "
       "(KLU) solve of each process's block: the blocks keep the saddle-point "
       "structure of the contact rows intact, which incomplete factorizations "
-      "and AMG do not handle; on one process it is a direct solve. See "
-      "doc/parallel.md for what each costs.");
+      "and AMG do not handle; on one process it is a direct solve. AMG is "
+      "GMRES preconditioned by Trilinos ML smoothed aggregation with the "
+      "rigid-body modes of each body as near-null space, on the system "
+      "with the contact multipliers condensed (Condense multipliers is "
+      "implied); the hierarchy is reused while GMRES needs at most twice "
+      "the iterations it needed after its build. See doc/parallel.md and "
+      "doc/solvers.md for what each costs.");
     prm.declare_entry("Linear tolerance",
                       default_text(defaults.tolerance),
                       Patterns::Double(1e-300, 1),
@@ -66,6 +73,19 @@ namespace ContactDynamics
   }
 
   void
+  LinearSolver::set_near_null_space(std::vector<std::vector<double>> modes,
+                                    const unsigned int dofs_per_vertex)
+  {
+    n_modes               = modes.size();
+    this->dofs_per_vertex = dofs_per_vertex;
+    null_space.clear();
+    for (const auto &mode : modes)
+      null_space.insert(null_space.end(), mode.begin(), mode.end());
+    amg.reset();
+    amg_matrix.reset();
+  }
+
+  void
   LinearSolver::release()
   {
     // the solver refers to its control, so it goes first
@@ -79,6 +99,8 @@ namespace ContactDynamics
   LinearSolver::factorize(const TrilinosWrappers::SparseMatrix &matrix)
   {
     release();
+    if (type == Type::amg)
+      return;
     if (type == Type::gmres)
       {
         preconditioner =
@@ -108,6 +130,11 @@ namespace ContactDynamics
         factorize(matrix);
         factorization_valid = keep;
       }
+    if (type == Type::amg)
+      {
+        rhs *= -1.;
+        return solve_amg(matrix, rhs, solution, rhs_norm);
+      }
     rhs *= -1.;
     if (type == Type::gmres)
       return solve_gmres(matrix, rhs, solution, rhs_norm);
@@ -127,6 +154,68 @@ namespace ContactDynamics
       TrilinosWrappers::SolverGMRES::AdditionalData(verbose, 100));
     solution = 0;
     gmres.solve(matrix, solution, rhs, *preconditioner);
+    return control.last_step();
+  }
+
+  unsigned int
+  LinearSolver::solve_amg(const TrilinosWrappers::SparseMatrix &matrix,
+                          const TrilinosWrappers::MPI::Vector  &rhs,
+                          TrilinosWrappers::MPI::Vector        &solution,
+                          const double                          rhs_norm)
+  {
+    const auto build = [&]() {
+      amg_matrix = std::make_unique<TrilinosWrappers::SparseMatrix>();
+      amg_matrix->copy_from(matrix);
+      amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+      TrilinosWrappers::PreconditionAMG::AdditionalData data(true, false);
+      data.smoother_sweeps = 2;
+      Teuchos::ParameterList              list;
+      std::unique_ptr<Epetra_MultiVector> unused_modes;
+      data.set_parameters(list, unused_modes, *amg_matrix);
+      list.set("ML output", 0);
+      if (n_modes > 0 &&
+          null_space.size() ==
+            n_modes * matrix.locally_owned_range_indices().n_elements())
+        {
+          list.set("PDE equations", static_cast<int>(dofs_per_vertex));
+          list.set("null space: type", "pre-computed");
+          list.set("null space: dimension", static_cast<int>(n_modes));
+          list.set("null space: vectors", null_space.data());
+        }
+      amg->initialize(*amg_matrix, list);
+      ++amg_builds;
+      iterations_after_build = 0;
+    };
+    if (!amg || rebuild_amg)
+      build();
+    rebuild_amg = false;
+    SolverControl control(max_iterations, tolerance * rhs_norm, false, false);
+    TrilinosWrappers::SolverGMRES gmres(
+      control,
+      TrilinosWrappers::SolverGMRES::AdditionalData(verbose, 100));
+    const auto attempt = [&]() {
+      solution = 0;
+      try
+        {
+          gmres.solve(matrix, solution, rhs, *amg);
+          return true;
+        }
+      catch (const std::exception &)
+        {
+          return false;
+        }
+    };
+    if (!attempt())
+      {
+        // an old hierarchy that no longer works: once more with a new one
+        build();
+        solution = 0;
+        gmres.solve(matrix, solution, rhs, *amg);
+      }
+    if (iterations_after_build == 0)
+      iterations_after_build = std::max(1u, control.last_step());
+    else if (control.last_step() > 2 * iterations_after_build)
+      rebuild_amg = true;
     return control.last_step();
   }
 } // namespace ContactDynamics

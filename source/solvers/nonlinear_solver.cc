@@ -189,7 +189,9 @@ namespace ContactDynamics
         std::unique_ptr<TimerOutput::Scope> scope;
         if (timer)
           scope = std::make_unique<TimerOutput::Scope>(*timer, "linear solve");
-        if (condense_multipliers && system.has_multipliers())
+        if ((condense_multipliers ||
+             linear_solver.wants_condensed_matrix()) &&
+            system.has_multipliers())
           {
             // the solver refers to the matrix condense() rebuilds
             linear_solver.release();

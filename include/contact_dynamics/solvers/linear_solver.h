@@ -8,6 +8,7 @@
 #include <deal.II/base/config.h>
 
 #include <memory>
+#include <vector>
 
 DEAL_II_NAMESPACE_OPEN
 class ParameterHandler;
@@ -17,6 +18,7 @@ namespace TrilinosWrappers
   class SparseMatrix;
   class SolverDirect;
   class PreconditionBlockwiseDirect;
+  class PreconditionAMG;
   namespace MPI
   {
     class Vector;
@@ -35,7 +37,8 @@ namespace ContactDynamics
     {
       klu,
       mumps,
-      gmres
+      gmres,
+      amg
     };
 
     LinearSolver();
@@ -47,6 +50,21 @@ namespace ContactDynamics
     /** `verbose`: GMRES prints its iterations. */
     void
     parse_parameters(ParameterHandler &prm, const bool verbose);
+
+    /**
+     * AMG: the near-null space (rigid-body modes per body), each vector
+     * over the locally owned dofs, and the number of dofs per vertex.
+     */
+    void
+    set_near_null_space(std::vector<std::vector<double>> modes,
+                        const unsigned int               dofs_per_vertex);
+
+    /** The solver works best on a displacement-only (condensed) matrix. */
+    bool
+    wants_condensed_matrix() const
+    {
+      return type == Type::amg;
+    }
 
     /** The next solve needs a matrix: there is no valid factorization. */
     bool
@@ -105,6 +123,22 @@ namespace ContactDynamics
     std::unique_ptr<TrilinosWrappers::PreconditionBlockwiseDirect>
          preconditioner;
     bool factorization_valid = false;
+
+    // AMG: the hierarchy is built on a copy of a matrix and reused for the
+    // following matrices while GMRES needs at most twice the iterations it
+    // needed right after the build
+    unsigned int solve_amg(const TrilinosWrappers::SparseMatrix &matrix,
+                           const TrilinosWrappers::MPI::Vector  &rhs,
+                           TrilinosWrappers::MPI::Vector        &solution,
+                           const double                          rhs_norm);
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+    std::unique_ptr<TrilinosWrappers::SparseMatrix>    amg_matrix;
+    std::vector<double>                                null_space;
+    unsigned int                                       n_modes         = 0;
+    unsigned int                                       dofs_per_vertex = 1;
+    unsigned int iterations_after_build = 0;
+    unsigned int amg_builds              = 0;
+    bool         rebuild_amg             = false;
   };
 } // namespace ContactDynamics
 

@@ -122,6 +122,14 @@ namespace ContactDynamics
       this->timer = &timer;
     }
 
+    /** See LinearSolver::set_near_null_space(). */
+    void
+    set_near_null_space(std::vector<std::vector<double>> modes,
+                        const unsigned int               dofs_per_vertex)
+    {
+      linear_solver.set_near_null_space(std::move(modes), dofs_per_vertex);
+    }
+
     /** See LinearSolver::release(). */
     void
     release_factorization()
