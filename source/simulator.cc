@@ -272,6 +272,8 @@ namespace ContactDynamics
       dsp.add(i, i);
     if (contact)
       contact->add_sparsity(dsp);
+    if (contact && newton.condenses())
+      MultiplierCondensation::add_fill_in(dsp, multiplier_groups());
     // rows assembled on other processes (cells and contact patches at the
     // edges of the parts) go to their owners
     SparsityTools::distribute_sparsity_pattern(dsp,

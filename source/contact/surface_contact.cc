@@ -119,14 +119,14 @@ namespace ContactDynamics
       "'velocity persistency': the paper's velocity-level condition -int "
       "psi (v_s - v_p).n = 0, exact on flat surfaces only (drift on curved "
       "sliding ones). 'velocity update': as 'persistency', then after each "
-      "step the velocities are projected onto the energy the step should "
-      "have: the change of least kinetic norm of the free velocities of the "
-      "bodies the contact acted on returns the step's normal contact work "
-      "to kinetic energy (Hairer, Lubich and Wanner, Geometric Numerical "
-      "Integration, IV.4), so frictionless impacts keep the energy exactly "
-      "and penetrations are those of 'persistency'; it changes momentum, "
-      "and stops the bodies when they carry less kinetic energy than the "
-      "work to return (slow sliding). "
+      "step the free velocities of the bodies the contact acted on are "
+      "projected along the gradient of the kinetic energy (lumped-mass "
+      "metric; after Hairer, Lubich and Wanner, IV.4) so that the step's "
+      "normal contact work returns to kinetic energy: impacts of free "
+      "elastic bodies keep their energy exactly; it changes momentum, is "
+      "worse than 'persistency' with Rayleigh damping and at the lift-off "
+      "of driven bodies (chatter), and stops the bodies when they carry "
+      "less kinetic energy than the work to return (doc/contact.md). "
       "'none': the gap is enforced at every step ('static').");
     prm.declare_entry("Capture tolerance",
                       default_text(defaults.capture_tolerance),

@@ -366,50 +366,147 @@ namespace ContactDynamics
                                                  values[best[d]]};
       }
 
-    DynamicSparsityPattern    dsp(rhs.size(), rhs.size(), owned);
-    std::vector<SparseRow>    rows;
-    std::vector<Index>        row_indices;
-    TrilinosWrappers::MPI::Vector &b = *condensed_rhs;
-    b.reinit(owned, comm);
-    for (const Index i : owned)
+    // the rows that change: the groups' displacement rows (above), the
+    // condensed multipliers' rows, and every row with a condensed column
+    std::vector<bool> condensed_column(matrix.NumMyCols(), false);
+    for (int c = 0; c < matrix.NumMyCols(); ++c)
+      condensed_column[c] =
+        is_condensed(static_cast<Index>(matrix.GCID(c)));
+    std::vector<Index> affected;
+    for (int r = 0; r < matrix.NumMyRows(); ++r)
       {
-        SparseRow row;
-        double    value = rhs(i);
-        if (is_condensed(i))
+        const Index row = matrix.GRID(r);
+        if (replaced.count(row) > 0)
+          continue;
+        int     n       = 0;
+        double *values  = nullptr;
+        int    *indices = nullptr;
+        matrix.ExtractMyRowView(r, n, values, indices);
+        bool changes = is_condensed(row);
+        for (int k = 0; k < n && !changes; ++k)
+          changes = condensed_column[indices[k]];
+        if (changes)
+          affected.push_back(row);
+      }
+    for (const Index row : affected)
+      {
+        double    value = rhs(row);
+        SparseRow new_row;
+        if (is_condensed(row))
           {
-            row   = {{i, 1.}};
-            value = 0;
-          }
-        else if (const auto it = replaced.find(i); it != replaced.end())
-          {
-            row   = it->second.first;
-            value = it->second.second;
+            new_row = {{row, 1.}};
+            value   = 0;
           }
         else
-          row = substitute(read_row(matrix, i), value);
-        b(i) = value;
+          new_row = substitute(read_row(matrix, row), value);
+        replaced[row] = {std::move(new_row), value};
+      }
+
+    // with the fill-in in the Jacobian's pattern (add_fill_in), a copy of
+    // the Jacobian with these rows rewritten; else a new matrix
+    bool fits = true;
+    for (const auto &r : replaced)
+      {
+        const SparseRow existing = read_row(matrix, r.first);
+        std::vector<Index> columns;
+        for (const auto &x : existing)
+          columns.push_back(x.first);
+        std::sort(columns.begin(), columns.end());
+        for (const auto &x : r.second.first)
+          fits = fits &&
+                 std::binary_search(columns.begin(), columns.end(), x.first);
+        if (!fits)
+          break;
+      }
+    fits = Utilities::MPI::min(fits ? 1 : 0, comm) == 1;
+
+    TrilinosWrappers::MPI::Vector &b = *condensed_rhs;
+    b.reinit(rhs);
+    b = rhs;
+    for (const auto &r : replaced)
+      b(r.first) = r.second.second;
+    b.compress(VectorOperation::insert);
+
+    std::vector<TrilinosWrappers::SparseMatrix::size_type> columns;
+    std::vector<TrilinosScalar>                            values;
+    const auto set_row = [&](const Index row, const SparseRow &entries) {
+      columns.clear();
+      values.clear();
+      for (const auto &x : entries)
+        {
+          columns.push_back(x.first);
+          values.push_back(x.second);
+        }
+      condensed_matrix->set(row, columns, values, false);
+    };
+    if (fits)
+      {
+        condensed_matrix->copy_from(jacobian);
+        for (const auto &r : replaced)
+          {
+            condensed_matrix->clear_row(r.first);
+            set_row(r.first, r.second.first);
+          }
+        condensed_matrix->compress(VectorOperation::insert);
+        return;
+      }
+
+    DynamicSparsityPattern dsp(rhs.size(), rhs.size(), owned);
+    std::vector<SparseRow> rows;
+    std::vector<Index>     row_indices;
+    for (const Index i : owned)
+      {
+        const auto it = replaced.find(i);
+        SparseRow  row =
+          it != replaced.end() ? it->second.first : read_row(matrix, i);
         for (const auto &x : row)
           dsp.add(i, x.first);
         dsp.add(i, i);
         rows.push_back(std::move(row));
         row_indices.push_back(i);
       }
-    b.compress(VectorOperation::insert);
     condensed_matrix->reinit(owned, owned, dsp, comm);
-    std::vector<TrilinosWrappers::SparseMatrix::size_type> columns;
-    std::vector<TrilinosScalar>                            values;
     for (unsigned int r = 0; r < rows.size(); ++r)
-      {
-        columns.clear();
-        values.clear();
-        for (const auto &x : rows[r])
-          {
-            columns.push_back(x.first);
-            values.push_back(x.second);
-          }
-        condensed_matrix->set(row_indices[r], columns, values, false);
-      }
+      set_row(row_indices[r], rows[r]);
     condensed_matrix->compress(VectorOperation::insert);
+  }
+
+  void
+  MultiplierCondensation::add_fill_in(DynamicSparsityPattern             &dsp,
+                                      const std::vector<MultiplierGroup> &groups)
+  {
+    const auto columns_of = [&](const Index row) {
+      std::vector<Index> columns;
+      for (auto it = dsp.begin(row); it != dsp.end(row); ++it)
+        columns.push_back(it->column());
+      return columns;
+    };
+    for (const auto &group : groups)
+      {
+        std::vector<Index> fill;
+        for (const Index i : group.displacements)
+          {
+            const auto c = columns_of(i);
+            fill.insert(fill.end(), c.begin(), c.end());
+          }
+        for (const Index m : group.multipliers)
+          {
+            const auto c = columns_of(m);
+            fill.insert(fill.end(), c.begin(), c.end());
+          }
+        std::sort(fill.begin(), fill.end());
+        fill.erase(std::unique(fill.begin(), fill.end()), fill.end());
+        std::vector<Index> rows = group.displacements;
+        for (const Index m : group.multipliers)
+          {
+            const auto c = columns_of(m);
+            rows.insert(rows.end(), c.begin(), c.end());
+          }
+        for (const Index r : rows)
+          if (dsp.row_index_set().size() == 0 ||
+              dsp.row_index_set().is_element(r))
+            dsp.add_entries(r, fill.begin(), fill.end(), true);
+      }
   }
 
   void

@@ -195,9 +195,16 @@ namespace ContactDynamics
           {
             // the solver refers to the matrix condense() rebuilds
             linear_solver.release();
-            condensation.condense(jacobian,
-                                  residual,
-                                  system.multiplier_groups());
+            {
+              std::unique_ptr<TimerOutput::Scope> condense_scope;
+              if (timer)
+                condense_scope =
+                  std::make_unique<TimerOutput::Scope>(*timer,
+                                                       "condensation");
+              condensation.condense(jacobian,
+                                    residual,
+                                    system.multiplier_groups());
+            }
             TrilinosWrappers::MPI::Vector rhs(condensation.rhs());
             result.linear_iterations +=
               linear_solver.solve(condensation.matrix(),

@@ -13,6 +13,7 @@
 #include <vector>
 
 DEAL_II_NAMESPACE_OPEN
+class DynamicSparsityPattern;
 namespace TrilinosWrappers
 {
   class SparseMatrix;
@@ -66,6 +67,17 @@ namespace ContactDynamics
     condense(const TrilinosWrappers::SparseMatrix &jacobian,
              const TrilinosWrappers::MPI::Vector  &rhs,
              const std::vector<MultiplierGroup>   &groups);
+
+    /**
+     * Adds to a (structurally symmetric) sparsity pattern the entries the
+     * condensation fills in: a row that couples to a multiplier of group g
+     * gets the columns of g's displacement rows. With them the condensed
+     * matrix is a copy of the Jacobian with the affected rows rewritten;
+     * without, condense() builds it anew (slower).
+     */
+    static void
+    add_fill_in(DynamicSparsityPattern             &dsp,
+                const std::vector<MultiplierGroup> &groups);
 
     const TrilinosWrappers::SparseMatrix &
     matrix() const;

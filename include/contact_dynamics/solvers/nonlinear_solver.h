@@ -122,6 +122,16 @@ namespace ContactDynamics
       this->timer = &timer;
     }
 
+    /**
+     * The linear solves condense the multipliers: the Jacobian's sparsity
+     * pattern should hold the fill-in (MultiplierCondensation::add_fill_in).
+     */
+    bool
+    condenses() const
+    {
+      return condense_multipliers || linear_solver.wants_condensed_matrix();
+    }
+
     /** See LinearSolver::set_near_null_space(). */
     void
     set_near_null_space(std::vector<std::vector<double>> modes,
