@@ -361,9 +361,21 @@ namespace ContactDynamics
               }
           }
         while (std::next_permutation(order.begin(), order.end()));
+        // each equation scaled to the diagonal of the stiffness row it
+        // replaces: the same solution, and the smoothers of an algebraic
+        // multigrid see the scale of the elasticity rows
         for (unsigned int d = 0; d < dim; ++d)
-          replaced[g.group->displacements[d]] = {equations[best[d]],
-                                                 values[best[d]]};
+          {
+            const Index  row      = g.group->displacements[d];
+            SparseRow    equation = equations[best[d]];
+            const double diagonal = entry(equation, row);
+            const double target   = std::abs(entry(g.rows[d], row));
+            const double factor =
+              (diagonal != 0 && target > 0) ? target / diagonal : 1.;
+            for (auto &x : equation)
+              x.second *= factor;
+            replaced[row] = {std::move(equation), factor * values[best[d]]};
+          }
       }
 
     // the rows that change: the groups' displacement rows (above), the
