@@ -272,7 +272,7 @@ namespace ContactDynamics
       dsp.add(i, i);
     if (contact)
       contact->add_sparsity(dsp);
-    if (contact && newton.condenses())
+    if (contact && newton.wants_fill_in())
       MultiplierCondensation::add_fill_in(dsp, multiplier_groups());
     // rows assembled on other processes (cells and contact patches at the
     // edges of the parts) go to their owners

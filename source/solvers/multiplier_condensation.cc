@@ -181,7 +181,8 @@ namespace ContactDynamics
   MultiplierCondensation::condense(
     const TrilinosWrappers::SparseMatrix &jacobian,
     const TrilinosWrappers::MPI::Vector  &rhs,
-    const std::vector<MultiplierGroup>   &groups)
+    const std::vector<MultiplierGroup>   &groups,
+    const bool                            copy_jacobian)
   {
     const Epetra_CrsMatrix &matrix = jacobian.trilinos_matrix();
     const IndexSet         &owned  = rhs.locally_owned_elements();
@@ -416,7 +417,7 @@ namespace ContactDynamics
 
     // with the fill-in in the Jacobian's pattern (add_fill_in), a copy of
     // the Jacobian with these rows rewritten; else a new matrix
-    bool fits = true;
+    bool fits = copy_jacobian;
     for (const auto &r : replaced)
       {
         const SparseRow existing = read_row(matrix, r.first);

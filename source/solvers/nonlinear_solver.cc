@@ -203,7 +203,8 @@ namespace ContactDynamics
                                                        "condensation");
               condensation.condense(jacobian,
                                     residual,
-                                    system.multiplier_groups());
+                                    system.multiplier_groups(),
+                                    linear_solver.wants_condensed_matrix());
             }
             TrilinosWrappers::MPI::Vector rhs(condensation.rhs());
             result.linear_iterations +=

@@ -61,12 +61,16 @@ namespace ContactDynamics
 
     /**
      * Builds the condensed matrix and right-hand side from `jacobian` and
-     * `rhs` (J dx = -rhs). Collective.
+     * `rhs` (J dx = -rhs). With `copy_jacobian`, the matrix is a copy of
+     * the Jacobian with the changed rows rewritten if its pattern holds the
+     * fill-in (fast; structural zeros at the multipliers); otherwise a
+     * matrix with its own pattern. Collective.
      */
     void
     condense(const TrilinosWrappers::SparseMatrix &jacobian,
              const TrilinosWrappers::MPI::Vector  &rhs,
-             const std::vector<MultiplierGroup>   &groups);
+             const std::vector<MultiplierGroup>   &groups,
+             const bool                            copy_jacobian);
 
     /**
      * Adds to a (structurally symmetric) sparsity pattern the entries the
