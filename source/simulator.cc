@@ -184,8 +184,8 @@ namespace ContactDynamics
     {
       // the rigid-body modes of each body, for an algebraic multigrid:
       // translations and rotations about the origin (reference positions)
-      const unsigned int n_rotations = dim == 2 ? 1 : 3;
-      const unsigned int per_body    = dim + n_rotations;
+      const unsigned int               n_rotations = dim == 2 ? 1 : 3;
+      const unsigned int               per_body    = dim + n_rotations;
       std::vector<std::vector<double>> modes(
         per_body * bodies.size(),
         std::vector<double>(locally_owned.n_elements(), 0.));
@@ -193,7 +193,7 @@ namespace ContactDynamics
         if (cell->is_locally_owned())
           for (const unsigned int v : cell->vertex_indices())
             {
-              const Point<dim> &x     = cell->vertex(v);
+              const Point<dim>  &x     = cell->vertex(v);
               const unsigned int first = per_body * cell->material_id();
               std::array<types::global_dof_index, dim> dofs;
               for (unsigned int d = 0; d < dim; ++d)
@@ -251,20 +251,32 @@ namespace ContactDynamics
     setup_sparsity();
   }
 
+  namespace
+  {
+    // couplings of the bulk: the first dim components (displacements)
+    // with each other
+    Table<2, DoFTools::Coupling>
+    displacement_coupling(const unsigned int n_components,
+                          const unsigned int dim)
+    {
+      Table<2, DoFTools::Coupling> coupling(n_components, n_components);
+      for (unsigned int c = 0; c < n_components; ++c)
+        for (unsigned int d = 0; d < n_components; ++d)
+          coupling(c, d) =
+            (c < dim && d < dim) ? DoFTools::always : DoFTools::none;
+      return coupling;
+    }
+  } // namespace
+
   template <int dim>
   void
   Simulator<dim>::setup_sparsity()
   {
     // the bulk couples displacements only; contact adds its own couplings
-    const unsigned int           n_components = fe->n_components();
-    Table<2, DoFTools::Coupling> coupling(n_components, n_components);
-    for (unsigned int c = 0; c < n_components; ++c)
-      for (unsigned int d = 0; d < n_components; ++d)
-        coupling(c, d) =
-          (c < dim && d < dim) ? DoFTools::always : DoFTools::none;
     DynamicSparsityPattern dsp(locally_relevant);
     DoFTools::make_sparsity_pattern(dof_handler,
-                                    coupling,
+                                    displacement_coupling(fe->n_components(),
+                                                          dim),
                                     dsp,
                                     increment_constraints,
                                     false);
@@ -655,14 +667,11 @@ namespace ContactDynamics
   {
     // the consistent mass matrix M (constant in a total Lagrangian
     // description) and its row sums, the lumped masses
-    const unsigned int           n_components = fe->n_components();
-    Table<2, DoFTools::Coupling> coupling(n_components, n_components);
-    for (unsigned int c = 0; c < n_components; ++c)
-      for (unsigned int d = 0; d < n_components; ++d)
-        coupling(c, d) =
-          (c < dim && d < dim) ? DoFTools::always : DoFTools::none;
     DynamicSparsityPattern dsp(locally_relevant);
-    DoFTools::make_sparsity_pattern(dof_handler, coupling, dsp);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    displacement_coupling(fe->n_components(),
+                                                          dim),
+                                    dsp);
     for (const auto i : locally_relevant)
       dsp.add(i, i);
     SparsityTools::distribute_sparsity_pattern(dsp,
@@ -719,10 +728,10 @@ namespace ContactDynamics
     VectorType direction(v_new);
     mass_matrix.vmult(direction, v_new);
     for (const auto i : locally_owned)
-      direction(i) = (increment_constraints.is_constrained(i) ||
-                      !(lumped_mass(i) > 0)) ?
-                       0. :
-                       direction(i) / lumped_mass(i);
+      direction(i) =
+        (increment_constraints.is_constrained(i) || !(lumped_mass(i) > 0)) ?
+          0. :
+          direction(i) / lumped_mass(i);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && touched[cell->material_id()] == 0.)
         {

@@ -48,12 +48,14 @@ main()
   std::vector<double> per_newton;
   for (const std::string factor : {"0.5", "1"})
     {
-      const Columns amg = run("AMG", factor);
-      const Columns klu = run("KLU", factor);
-      const std::string name = "refinement factor " + factor;
-      double scale = 0, largest = 0;
-      for (const auto *column :
-           {"kinetic_energy", "elastic_energy", "external_work", "contact_work"})
+      const Columns     amg   = run("AMG", factor);
+      const Columns     klu   = run("KLU", factor);
+      const std::string name  = "refinement factor " + factor;
+      double            scale = 0, largest = 0;
+      for (const auto *column : {"kinetic_energy",
+                                 "elastic_energy",
+                                 "external_work",
+                                 "contact_work"})
         for (unsigned int i = 0; i < klu.at(column).size(); ++i)
           {
             scale   = std::max(scale, std::abs(klu.at(column)[i]));

@@ -32,8 +32,8 @@ namespace
   Columns
   run(const std::string &file, ParameterChanges changes, const bool condense)
   {
-    changes.push_back({"Nonlinear solver/Condense multipliers",
-                       condense ? "true" : "false"});
+    changes.push_back(
+      {"Nonlinear solver/Condense multipliers", condense ? "true" : "false"});
     changes.push_back({"Output/Output directory",
                        std::string("output_") + (condense ? "c" : "u")});
     changes.push_back({"Output/VTU interval", "0"});
@@ -56,10 +56,10 @@ namespace
       if (full.count(column))
         for (unsigned int i = 0; i < full.at(column).size(); ++i)
           {
-            scale   = std::max(scale, std::abs(full.at(column)[i]));
-            largest = std::max(largest,
-                               std::abs(full.at(column)[i] -
-                                        cond.at(column)[i]));
+            scale = std::max(scale, std::abs(full.at(column)[i]));
+            largest =
+              std::max(largest,
+                       std::abs(full.at(column)[i] - cond.at(column)[i]));
           }
     if (full.count("frictional_dissipation"))
       for (unsigned int i = 0; i < full.at("step").size(); ++i)
@@ -70,7 +70,10 @@ namespace
                 largest / scale,
                 0,
                 1e-6);
-    record_measured(name + ": largest difference / scale", largest / scale, 0, 1e-6);
+    record_measured(name + ": largest difference / scale",
+                    largest / scale,
+                    0,
+                    1e-6);
     const double n_full = full.at("cumulative_newton_iterations").back();
     const double n_cond = cond.at("cumulative_newton_iterations").back();
     if (same_iterations)
@@ -88,8 +91,8 @@ int
 main()
 {
   initlog();
-  const std::string bar = "prm/examples/bar_impact.prm";
-  const std::string patch = "prm/examples/patch_test.prm";
+  const std::string      bar   = "prm/examples/bar_impact.prm";
+  const std::string      patch = "prm/examples/patch_test.prm";
   const ParameterChanges sliding{
     {"Boundary conditions/Dirichlet",
      "lower_bottom: xy: 0; upper_top: x: if(t <= 1, 0, 0.05*(t - 1)); "

@@ -58,7 +58,7 @@ namespace ContactDynamics
                         comm,
                         ArrayView<double>(sums, 2));
     contact_work += sums[0];
-    last_normal_work = sums[0] - sums[1];
+    last_normal_work  = sums[0] - sums[1];
     mean_normal_force = force;
     mean_normal_force += force_committed;
     if (friction)

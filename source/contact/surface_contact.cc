@@ -399,7 +399,8 @@ namespace ContactDynamics
     std::set<types::global_dof_index> seen;
     for (const auto &pair : pairs)
       for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
-        if (pair.owned_node[j] && seen.insert(pair.secondary.dofs[j][dim]).second)
+        if (pair.owned_node[j] &&
+            seen.insert(pair.secondary.dofs[j][dim]).second)
           {
             MultiplierGroup group;
             for (unsigned int d = 0; d < dim; ++d)

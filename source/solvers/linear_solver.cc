@@ -6,9 +6,10 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <Teuchos_ParameterList.hpp>
 #include <contact_dynamics/parameters.h>
 #include <contact_dynamics/solvers/linear_solver.h>
+
+#include <Teuchos_ParameterList.hpp>
 
 namespace ContactDynamics
 {

@@ -96,8 +96,8 @@ namespace ContactDynamics
         }
       if (!(largest > 0))
         return false;
-      unsigned int n_columns = 0;
-      const auto   orthogonalize = [&](std::vector<double> v,
+      unsigned int n_columns     = 0;
+      const auto   orthogonalize = [&](std::vector<double>  v,
                                      std::vector<double> *coefficients) {
         for (int pass = 0; pass < 2; ++pass)
           for (unsigned int c = 0; c < n_columns; ++c)
@@ -139,7 +139,7 @@ namespace ContactDynamics
           for (unsigned int u = 0; u < dim; ++u)
             {
               std::vector<double> e(dim, 0.);
-              e[u]        = 1;
+              e[u]            = 1;
               const auto v    = orthogonalize(e, nullptr);
               double     norm = 0;
               for (const double x : v)
@@ -225,17 +225,14 @@ namespace ContactDynamics
     std::sort(all_condensed.begin(), all_condensed.end());
     n_condensed_multipliers = all_condensed.size();
     const auto is_condensed = [&](const Index i) {
-      return std::binary_search(all_condensed.begin(),
-                                all_condensed.end(),
-                                i);
+      return std::binary_search(all_condensed.begin(), all_condensed.end(), i);
     };
 
     // 2. dlambda = -e - F du per condensed multiplier: E = R^-1 Q_1^T
     eliminations.clear();
     for (const auto &g : condensed)
       {
-        const unsigned int dim = g.rows.size(),
-                           k   = g.group->multipliers.size();
+        const unsigned int dim = g.rows.size(), k = g.group->multipliers.size();
         // E, by back substitution of R E = Q_1^T
         std::vector<std::vector<double>> e(k, std::vector<double>(dim, 0.));
         for (int a = k - 1; a >= 0; --a)
@@ -323,8 +320,7 @@ namespace ContactDynamics
     std::unordered_map<Index, std::pair<SparseRow, double>> replaced;
     for (const auto &g : condensed)
       {
-        const unsigned int dim = g.rows.size(),
-                           k   = g.group->multipliers.size();
+        const unsigned int dim = g.rows.size(), k = g.group->multipliers.size();
         std::vector<SparseRow> equations(dim);
         std::vector<double>    values(dim, 0.);
         for (unsigned int a = 0; a < k; ++a)
@@ -353,15 +349,14 @@ namespace ContactDynamics
           {
             double product = 1;
             for (unsigned int d = 0; d < dim; ++d)
-              product *= std::abs(
-                entry(equations[order[d]], g.group->displacements[d]));
+              product *=
+                std::abs(entry(equations[order[d]], g.group->displacements[d]));
             if (product > best_product)
               {
                 best_product = product;
                 best         = order;
               }
-          }
-        while (std::next_permutation(order.begin(), order.end()));
+        } while (std::next_permutation(order.begin(), order.end()));
         // each equation scaled to the diagonal of the stiffness row it
         // replaces: the same solution, and the smoothers of an algebraic
         // multigrid see the scale of the elasticity rows
@@ -383,8 +378,7 @@ namespace ContactDynamics
     // condensed multipliers' rows, and every row with a condensed column
     std::vector<bool> condensed_column(matrix.NumMyCols(), false);
     for (int c = 0; c < matrix.NumMyCols(); ++c)
-      condensed_column[c] =
-        is_condensed(static_cast<Index>(matrix.GCID(c)));
+      condensed_column[c] = is_condensed(static_cast<Index>(matrix.GCID(c)));
     std::vector<Index> affected;
     for (int r = 0; r < matrix.NumMyRows(); ++r)
       {
@@ -420,14 +414,14 @@ namespace ContactDynamics
     bool fits = copy_jacobian;
     for (const auto &r : replaced)
       {
-        const SparseRow existing = read_row(matrix, r.first);
+        const SparseRow    existing = read_row(matrix, r.first);
         std::vector<Index> columns;
         for (const auto &x : existing)
           columns.push_back(x.first);
         std::sort(columns.begin(), columns.end());
         for (const auto &x : r.second.first)
-          fits = fits &&
-                 std::binary_search(columns.begin(), columns.end(), x.first);
+          fits =
+            fits && std::binary_search(columns.begin(), columns.end(), x.first);
         if (!fits)
           break;
       }
@@ -485,8 +479,9 @@ namespace ContactDynamics
   }
 
   void
-  MultiplierCondensation::add_fill_in(DynamicSparsityPattern             &dsp,
-                                      const std::vector<MultiplierGroup> &groups)
+  MultiplierCondensation::add_fill_in(
+    DynamicSparsityPattern             &dsp,
+    const std::vector<MultiplierGroup> &groups)
   {
     const auto columns_of = [&](const Index row) {
       std::vector<Index> columns;
@@ -523,8 +518,7 @@ namespace ContactDynamics
   }
 
   void
-  MultiplierCondensation::recover(
-    TrilinosWrappers::MPI::Vector &solution) const
+  MultiplierCondensation::recover(TrilinosWrappers::MPI::Vector &solution) const
   {
     const IndexSet &owned = solution.locally_owned_elements();
     IndexSet        needed(solution.size());

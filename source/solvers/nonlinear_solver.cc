@@ -139,12 +139,12 @@ namespace ContactDynamics
   void
   NewtonSolver::parse_parameters(ParameterHandler &prm)
   {
-    absolute_tolerance = prm.get_double("Absolute tolerance");
-    relative_tolerance = prm.get_double("Relative tolerance");
-    step_tolerance     = prm.get_double("Step tolerance");
-    cycle_damping      = prm.get_bool("Cycle damping");
-    max_iterations     = prm.get_integer("Maximum iterations");
-    verbose_           = prm.get_bool("Verbose");
+    absolute_tolerance   = prm.get_double("Absolute tolerance");
+    relative_tolerance   = prm.get_double("Relative tolerance");
+    step_tolerance       = prm.get_double("Step tolerance");
+    cycle_damping        = prm.get_bool("Cycle damping");
+    max_iterations       = prm.get_integer("Maximum iterations");
+    verbose_             = prm.get_bool("Verbose");
     condense_multipliers = prm.get_bool("Condense multipliers");
     linear_solver.parse_parameters(prm, verbose_);
   }
@@ -189,8 +189,7 @@ namespace ContactDynamics
         std::unique_ptr<TimerOutput::Scope> scope;
         if (timer)
           scope = std::make_unique<TimerOutput::Scope>(*timer, "linear solve");
-        if ((condense_multipliers ||
-             linear_solver.wants_condensed_matrix()) &&
+        if ((condense_multipliers || linear_solver.wants_condensed_matrix()) &&
             system.has_multipliers())
           {
             // the solver refers to the matrix condense() rebuilds
@@ -199,8 +198,7 @@ namespace ContactDynamics
               std::unique_ptr<TimerOutput::Scope> condense_scope;
               if (timer)
                 condense_scope =
-                  std::make_unique<TimerOutput::Scope>(*timer,
-                                                       "condensation");
+                  std::make_unique<TimerOutput::Scope>(*timer, "condensation");
               condensation.condense(jacobian,
                                     residual,
                                     system.multiplier_groups(),

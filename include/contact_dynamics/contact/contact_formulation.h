@@ -13,9 +13,9 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <contact_dynamics/solvers/multiplier_condensation.h>
 #include <contact_dynamics/mechanics/time_integrator.h>
 #include <contact_dynamics/scenes/scene_layout.h>
+#include <contact_dynamics/solvers/multiplier_condensation.h>
 
 #include <array>
 #include <memory>

@@ -127,18 +127,19 @@ namespace ContactDynamics
     // AMG: the hierarchy is built on a copy of a matrix and reused for the
     // following matrices while GMRES needs at most twice the iterations it
     // needed right after the build
-    unsigned int solve_amg(const TrilinosWrappers::SparseMatrix &matrix,
-                           const TrilinosWrappers::MPI::Vector  &rhs,
-                           TrilinosWrappers::MPI::Vector        &solution,
-                           const double                          rhs_norm);
+    unsigned int
+    solve_amg(const TrilinosWrappers::SparseMatrix &matrix,
+              const TrilinosWrappers::MPI::Vector  &rhs,
+              TrilinosWrappers::MPI::Vector        &solution,
+              const double                          rhs_norm);
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
     std::unique_ptr<TrilinosWrappers::SparseMatrix>    amg_matrix;
     std::vector<double>                                null_space;
     unsigned int                                       n_modes         = 0;
     unsigned int                                       dofs_per_vertex = 1;
-    unsigned int iterations_after_build = 0;
-    unsigned int amg_builds              = 0;
-    bool         rebuild_amg             = false;
+    unsigned int iterations_after_build                                = 0;
+    unsigned int amg_builds                                            = 0;
+    bool         rebuild_amg                                           = false;
   };
 } // namespace ContactDynamics
 
