@@ -248,6 +248,9 @@ namespace ContactDynamics
     mechanics->assemble_body_force(body_force);
     if (contact)
       contact->update_candidates(ghosted(u, u_ghost));
+    // before the sparsity pattern: an iterative solver wants the fill-in
+    linear_solver_name =
+      newton.choose_linear_solver(dof_handler.n_dofs(), integrator.is_dynamic());
     setup_sparsity();
   }
 
@@ -621,7 +624,8 @@ namespace ContactDynamics
     pcout << "Scene '" << scene.name()
           << "': " << triangulation->n_active_cells() << " cells, "
           << dof_handler.n_dofs() << " unknowns, " << bodies.size() << " bod"
-          << (bodies.size() == 1 ? "y" : "ies") << std::endl;
+          << (bodies.size() == 1 ? "y" : "ies") << "; linear solver "
+          << linear_solver_name << std::endl;
     const unsigned int n_processes =
       Utilities::MPI::n_mpi_processes(mpi_communicator);
     if (n_processes > 1)

@@ -284,6 +284,7 @@ namespace ContactDynamics
     bool          structure_changed            = true;
     int           last_vtu_step                = -1;
     std::string   last_failure; // why the last failed step failed
+    std::string   linear_solver_name;
     EnergyBalance energies;
 
     std::unique_ptr<StatisticsFile>      statistics;

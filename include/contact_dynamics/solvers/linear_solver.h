@@ -8,6 +8,7 @@
 #include <deal.II/base/config.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 DEAL_II_NAMESPACE_OPEN
@@ -38,7 +39,8 @@ namespace ContactDynamics
       klu,
       mumps,
       gmres,
-      amg
+      amg,
+      automatic // resolved by choose(): KLU or AMG
     };
 
     LinearSolver();
@@ -58,6 +60,14 @@ namespace ContactDynamics
     void
     set_near_null_space(std::vector<std::vector<double>> modes,
                         const unsigned int               dofs_per_vertex);
+
+    /**
+     * `Linear solver = auto`: AMG for dynamic problems of at least
+     * `amg_threshold` unknowns, KLU otherwise (doc/solvers.md has the
+     * measured crossover). Returns the name of the solver used.
+     */
+    std::string
+    choose(const unsigned long n_unknowns, const bool dynamic);
 
     /** The solver works best on a displacement-only (condensed) matrix. */
     bool
@@ -113,7 +123,8 @@ namespace ContactDynamics
                 TrilinosWrappers::MPI::Vector        &solution,
                 const double                          rhs_norm) const;
 
-    Type         type           = Type::klu;
+    Type         type           = Type::automatic;
+    Type         requested      = Type::automatic;
     double       tolerance      = 1e-6;
     unsigned int max_iterations = 1000;
     bool         verbose        = false;

@@ -135,6 +135,13 @@ namespace ContactDynamics
       return linear_solver.wants_condensed_matrix();
     }
 
+    /** See LinearSolver::choose(). */
+    std::string
+    choose_linear_solver(const unsigned long n_unknowns, const bool dynamic)
+    {
+      return linear_solver.choose(n_unknowns, dynamic);
+    }
+
     /** See LinearSolver::set_near_null_space(). */
     void
     set_near_null_space(std::vector<std::vector<double>> modes,
