@@ -666,36 +666,6 @@ namespace ContactDynamics
   }
 
   template <int dim>
-  void
-  Simulator<dim>::setup_velocity_update()
-  {
-    // the consistent mass matrix M (constant in a total Lagrangian
-    // description) and its row sums, the lumped masses
-    DynamicSparsityPattern dsp(locally_relevant);
-    DoFTools::make_sparsity_pattern(dof_handler,
-                                    displacement_coupling(fe->n_components(),
-                                                          dim),
-                                    dsp);
-    for (const auto i : locally_relevant)
-      dsp.add(i, i);
-    SparsityTools::distribute_sparsity_pattern(dsp,
-                                               locally_owned,
-                                               mpi_communicator,
-                                               locally_relevant);
-    VectorType unused(residual);
-    mass_matrix.reinit(locally_owned, locally_owned, dsp, mpi_communicator);
-    mechanics->assemble_initial_acceleration_system(ghosted(u, u_ghost),
-                                                    ghosted(v, v_ghost),
-                                                    AffineConstraints<double>(),
-                                                    mass_matrix,
-                                                    unused);
-    VectorType ones(residual);
-    ones = 1.;
-    lumped_mass.reinit(residual);
-    mass_matrix.vmult(lumped_mass, ones);
-  }
-
-  template <int dim>
   double
   Simulator<dim>::apply_velocity_update()
   {
@@ -705,8 +675,6 @@ namespace ContactDynamics
     if (work == 0 || force == nullptr)
       return 0;
     TimerOutput::Scope t(*timer, "velocity update");
-    if (mass_matrix.m() == 0)
-      setup_velocity_update();
 
     // the bodies the step's contact impulse acted on: only their free
     // velocities change
@@ -722,20 +690,16 @@ namespace ContactDynamics
         }
     Utilities::MPI::sum(touched, mpi_communicator, touched);
 
-    // Hairer, Lubich and Wanner's standard projection (Geometric Numerical
-    // Integration, IV.4) of the velocities onto the energy the step should
-    // end with, in the metric of the lumped mass matrix D: along the
-    // gradient of the kinetic energy, w = D^-1 M v, on the free dofs of
-    // those bodies (w is v for a rigid motion, also next to a driven
-    // boundary, where the consistent metric would add a mesh-scale
-    // oscillation)
+    // A projection onto the energy the step should end with (after Hairer,
+    // Lubich and Wanner, Geometric Numerical Integration, IV.4: along the
+    // gradient of the kinetic energy, M^-1 M v = v): a factor 1 + s on the
+    // free velocities of those bodies. It can remove all of their kinetic
+    // energy; D^-1 M v (lumped metric) and the least-norm M_FF^-1 (M v)_F
+    // were tried and could not (doc/contact.md)
     VectorType direction(v_new);
-    mass_matrix.vmult(direction, v_new);
     for (const auto i : locally_owned)
-      direction(i) =
-        (increment_constraints.is_constrained(i) || !(lumped_mass(i) > 0)) ?
-          0. :
-          direction(i) / lumped_mass(i);
+      if (increment_constraints.is_constrained(i))
+        direction(i) = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && touched[cell->material_id()] == 0.)
         {
@@ -746,8 +710,9 @@ namespace ContactDynamics
         }
     direction.compress(VectorOperation::insert);
 
-    // K(v + s w) = K(v) + s b + s^2 K(w) = K(v) - work: the smaller root,
-    // or the largest removal if the step created more than w can carry
+    // K(v + s w) = K(v) + s b + s^2 K(w) = K(v) - work: the root of
+    // smaller size, or the largest removal (s = -1 when the prescribed
+    // velocities do not couple) if the step created more than w carries
     const double k_w =
       mechanics->kinetic_energy(ghosted(direction, scratch_ghost[0]));
     if (!(k_w > 0))

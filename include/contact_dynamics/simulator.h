@@ -192,15 +192,11 @@ namespace ContactDynamics
     apply_initial_conditions();
     void
     set_trial_velocity_and_acceleration();
-    /** The mass matrix of the velocity update, at its first use. */
-    void
-    setup_velocity_update();
     /**
-     * Stabilization 'velocity update': after a converged step, projects
-     * the free velocities of the bodies the contact acted on along the
-     * gradient of the kinetic energy (lumped-mass metric) so that the
-     * step's normal contact work returns to kinetic energy; returns the
-     * kinetic energy change.
+     * Stabilization 'velocity update': after a converged step, one factor
+     * on the free velocities of the bodies the contact acted on returns the
+     * step's normal contact work to kinetic energy; returns the kinetic
+     * energy change.
      */
     double
     apply_velocity_update();
@@ -262,9 +258,6 @@ namespace ContactDynamics
     IndexSet                             locally_relevant;
     AffineConstraints<double>            increment_constraints;
     std::unique_ptr<SolidMechanics<dim>> mechanics;
-    // stabilization 'velocity update': the mass matrix and its row sums
-    MatrixType mass_matrix;
-    VectorType lumped_mass;
 
     // state at t_n, the trial state at t_{n+1}, and work vectors
     VectorType u, v, a, u_new, v_new, a_new;

@@ -119,14 +119,13 @@ namespace ContactDynamics
       "'velocity persistency': the paper's velocity-level condition -int "
       "psi (v_s - v_p).n = 0, exact on flat surfaces only (drift on curved "
       "sliding ones). 'velocity update': as 'persistency', then after each "
-      "step the free velocities of the bodies the contact acted on are "
-      "projected along the gradient of the kinetic energy (lumped-mass "
-      "metric; after Hairer, Lubich and Wanner, IV.4) so that the step's "
-      "normal contact work returns to kinetic energy: impacts of free "
-      "elastic bodies keep their energy exactly; it changes momentum, is "
-      "worse than 'persistency' with Rayleigh damping and at the lift-off "
-      "of driven bodies (chatter), and stops the bodies when they carry "
-      "less kinetic energy than the work to return (doc/contact.md). "
+      "step one factor on the free velocities of the bodies the contact "
+      "acted on returns the step's normal contact work to kinetic energy "
+      "(a projection after Hairer, Lubich and Wanner, IV.4): impacts of "
+      "free elastic bodies keep their energy exactly; it changes momentum, "
+      "is worse than 'persistency' with Rayleigh damping and at the "
+      "lift-off of driven bodies (chatter), and stops the bodies when they "
+      "carry less kinetic energy than the work to return (doc/contact.md). "
       "'none': the gap is enforced at every step ('static').");
     prm.declare_entry("Capture tolerance",
                       default_text(defaults.capture_tolerance),
@@ -395,11 +394,18 @@ namespace ContactDynamics
   std::vector<MultiplierGroup>
   SurfaceContact<dim>::multiplier_groups() const
   {
+    // a node on a primary surface too carries other nodes' multipliers in
+    // its rows: it cannot be eliminated node by node, so it is left out
+    std::set<types::global_dof_index> primary;
+    for (const auto &pair : pairs)
+      for (const auto &node_dofs : pair.primary.dofs)
+        primary.insert(node_dofs[0]);
     std::vector<MultiplierGroup>      groups;
     std::set<types::global_dof_index> seen;
     for (const auto &pair : pairs)
       for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
         if (pair.owned_node[j] &&
+            primary.count(pair.secondary.dofs[j][0]) == 0 &&
             seen.insert(pair.secondary.dofs[j][dim]).second)
           {
             MultiplierGroup group;

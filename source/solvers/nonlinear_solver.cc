@@ -127,7 +127,7 @@ namespace ContactDynamics
       "same Newton iterates as the full system. Mortar: this code's force "
       "(the derivative of the enforced gaps) couples a node's rows to its "
       "neighbours' multipliers by terms of the size of the gap, which the "
-      "elimination leaves out: an inexact Newton method, measured 5-11 % "
+      "elimination leaves out: an inexact Newton method, measured 5-28 % "
       "more iterations to the same states (doc/solvers.md).");
     prm.declare_entry("Verbose",
                       default_text(defaults.verbose_),
