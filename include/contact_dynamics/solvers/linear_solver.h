@@ -1,31 +1,17 @@
 // The linear solve of a Newton iteration: a sparse direct solver (Trilinos
-// Amesos KLU or MUMPS) or GMRES with a block-wise direct preconditioner,
-// chosen once when the parameters are read, with the reuse of a
-// factorization across solves behind one interface.
+// Amesos KLU or MUMPS), GMRES with a block-wise direct preconditioner, or
+// GMRES with ML algebraic multigrid, chosen when the parameters are read
+// (or by size for 'auto'), with the reuse of a factorization or hierarchy
+// across solves behind one interface.
 #ifndef contact_dynamics_solvers_linear_solver_h
 #define contact_dynamics_solvers_linear_solver_h
 
-#include <deal.II/base/config.h>
+#include <contact_dynamics/solvers/trilinos_forward.h>
 
 #include <memory>
 #include <string>
 #include <vector>
 
-DEAL_II_NAMESPACE_OPEN
-class ParameterHandler;
-class SolverControl;
-namespace TrilinosWrappers
-{
-  class SparseMatrix;
-  class SolverDirect;
-  class PreconditionBlockwiseDirect;
-  class PreconditionAMG;
-  namespace MPI
-  {
-    class Vector;
-  }
-} // namespace TrilinosWrappers
-DEAL_II_NAMESPACE_CLOSE
 
 namespace ContactDynamics
 {

@@ -1,28 +1,19 @@
-// Static condensation of the contact multipliers from a Newton system: with
-// a diagonal mortar matrix D (dual basis) or nodal multipliers (node-to-
-// segment), the multipliers of a secondary node appear only in that node's
-// own displacement rows, so they can be eliminated node by node (Popp,
-// Gitterle, Gee and Wall 2010). The condensed system has the displacement
-// increments as its only unknowns.
+// Static condensation of the contact multipliers from a Newton system, node
+// by node (Popp, Gitterle, Gee and Wall 2010): exact where the multipliers
+// of a secondary node act only on that node's own displacement rows
+// (node-to-segment); for this code's mortar force, whose derivative couples
+// neighbours by terms of the size of the gap, an approximation of the
+// Jacobian (doc/solvers.md).
 #ifndef contact_dynamics_solvers_multiplier_condensation_h
 #define contact_dynamics_solvers_multiplier_condensation_h
 
 #include <deal.II/base/types.h>
 
+#include <contact_dynamics/solvers/trilinos_forward.h>
+
 #include <memory>
 #include <vector>
 
-DEAL_II_NAMESPACE_OPEN
-class DynamicSparsityPattern;
-namespace TrilinosWrappers
-{
-  class SparseMatrix;
-  namespace MPI
-  {
-    class Vector;
-  }
-} // namespace TrilinosWrappers
-DEAL_II_NAMESPACE_CLOSE
 
 namespace ContactDynamics
 {
