@@ -250,7 +250,10 @@ namespace ContactDynamics
       contact->update_candidates(ghosted(u, u_ghost));
     // before the sparsity pattern: an iterative solver wants the fill-in
     linear_solver_name =
-      newton.choose_linear_solver(dof_handler.n_dofs(), integrator.is_dynamic());
+      newton.choose_linear_solver(dof_handler.n_dofs(),
+                                  integrator.is_dynamic(),
+                                  Utilities::MPI::n_mpi_processes(
+                                    mpi_communicator));
     setup_sparsity();
   }
 

@@ -323,6 +323,11 @@ namespace ContactDynamics
       material_id(cell->active_cell_index()) = cell->material_id();
     data_out.add_data_vector(material_id, "material_id");
     data_out.build_patches();
+    // zlib's best compression cost 12 % of a bouncing-block run for files
+    // about 10 % smaller than the fastest level's
+    DataOutBase::VtkFlags flags;
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
+    data_out.set_flags(flags);
 
     // NaN or infinite values never reach a file: they name their field
     const auto names = data_out.get_dataset_names();

@@ -7,6 +7,7 @@
 #define contact_dynamics_solvers_linear_solver_h
 
 #include <contact_dynamics/solvers/trilinos_forward.h>
+#include <contact_dynamics/solvers/umfpack_factorization.h>
 
 #include <memory>
 #include <string>
@@ -23,10 +24,11 @@ namespace ContactDynamics
     enum class Type
     {
       klu,
+      umfpack,
       mumps,
       gmres,
       amg,
-      automatic // resolved by choose(): KLU or AMG
+      automatic // resolved by choose(): UMFPACK, KLU or AMG
     };
 
     LinearSolver();
@@ -49,11 +51,15 @@ namespace ContactDynamics
 
     /**
      * `Linear solver = auto`: AMG for dynamic problems of at least
-     * `amg_threshold` unknowns, KLU otherwise (doc/solvers.md has the
-     * measured crossover). Returns the name of the solver used.
+     * `amg_threshold` unknowns, otherwise UMFPACK on one process and KLU on
+     * several (doc/solvers.md has the measured crossovers). Returns the
+     * name of the solver used. Throws if UMFPACK is asked for on several
+     * processes.
      */
     std::string
-    choose(const unsigned long n_unknowns, const bool dynamic);
+    choose(const unsigned long n_unknowns,
+           const bool          dynamic,
+           const unsigned int  n_processes);
 
     /** The solver works best on a displacement-only (condensed) matrix. */
     bool
@@ -117,6 +123,8 @@ namespace ContactDynamics
 
     std::unique_ptr<SolverControl>                  solver_control;
     std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
+    // kept across factorizations: its symbolic analysis is reused
+    UmfpackFactorization umfpack;
     std::unique_ptr<TrilinosWrappers::PreconditionBlockwiseDirect>
          preconditioner;
     bool factorization_valid = false;

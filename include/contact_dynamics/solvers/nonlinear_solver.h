@@ -137,9 +137,11 @@ namespace ContactDynamics
 
     /** See LinearSolver::choose(). */
     std::string
-    choose_linear_solver(const unsigned long n_unknowns, const bool dynamic)
+    choose_linear_solver(const unsigned long n_unknowns,
+                         const bool          dynamic,
+                         const unsigned int  n_processes)
     {
-      return linear_solver.choose(n_unknowns, dynamic);
+      return linear_solver.choose(n_unknowns, dynamic, n_processes);
     }
 
     /** See LinearSolver::set_near_null_space(). */
