@@ -158,6 +158,21 @@ main()
           "prm/examples/patch_test.prm",
           {{"Nonlinear solver/Linear solver", "MUMPS"}});
   compare("bar_impact", "prm/examples/bar_impact.prm", {});
+  // the multipliers condensed: each process eliminates those of its own
+  // secondary nodes (split 5 / 3 here; none on the first process in the
+  // bar), the eliminations are gathered
+  compare("patch_test_friction_condensed",
+          "prm/examples/patch_test.prm",
+          {{"Contact/Friction coefficients", "0.3"},
+           {"Nonlinear solver/Condense multipliers", "true"},
+           {"Boundary conditions/Dirichlet",
+            "lower_bottom: xy: 0; upper_top: y: -1e-3*min(10*t, 1); "
+            "upper_top: x: 0.05*t"},
+           {"Time integration/Time step", "0.1"}});
+  compare("bar_impact_nts_condensed",
+          "prm/examples/bar_impact.prm",
+          {{"Contact/Formulation", "nts"},
+           {"Nonlinear solver/Condense multipliers", "true"}});
   compare("bouncing_block_mortar",
           "prm/bouncing_block/mortar_stabilized.prm",
           {{"Time integration/End time", "1.5"}});
@@ -175,6 +190,12 @@ main()
   compare("ironing_mortar_friction",
           "prm/ironing/mortar_friction.prm",
           {{"Time integration/End time", "0.12"}});
+  // GMRES with ML on the condensed systems, stopped at 1e-6 of the residual
+  compare("ironing_mortar_amg",
+          "prm/ironing/mortar.prm",
+          {{"Time integration/End time", "0.15"},
+           {"Nonlinear solver/Linear solver", "AMG"}},
+          1e-6);
   compare("ironing_nts_smoothed",
           "prm/ironing/nts_smoothed.prm",
           {{"Time integration/End time", "0.12"}});
