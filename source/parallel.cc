@@ -85,27 +85,65 @@ namespace ContactDynamics
     const Selection<ParallelParameters::Partitioner> partitioner_names{
       {ParallelParameters::Partitioner::metis, "metis"},
       {ParallelParameters::Partitioner::z_order, "z-order"}};
+    const Selection<ParallelParameters::Mesh> mesh_names{
+      {ParallelParameters::Mesh::replicated, "replicated"},
+      {ParallelParameters::Mesh::distributed, "distributed"}};
   } // namespace
 
   void
   ParallelParameters::declare_parameters(ParameterHandler &prm)
   {
+    const ParallelParameters defaults;
+    prm.declare_entry(
+      "Mesh",
+      mesh_names.name(defaults.mesh),
+      mesh_names.pattern(),
+      "'replicated': every process keeps the whole mesh "
+      "(parallel::shared::Triangulation), divided by the Partitioner; "
+      "simple, and the memory of the mesh grows with the processes. "
+      "'distributed': p4est (parallel::distributed::Triangulation); every "
+      "process keeps the scene's mesh as its coarse mesh, and the cells of "
+      "the Global refinements only where it works (its own and one layer "
+      "of ghosts), partitioned along a space-filling curve with the cells "
+      "at secondary surfaces weighted by Contact cell weight. Both gather "
+      "the contact surfaces on every process (O(surface) data), and each "
+      "process assembles its own cells and the contact conditions of its "
+      "own secondary nodes.");
+    prm.declare_entry(
+      "Global refinements",
+      std::to_string(defaults.global_refinements),
+      Patterns::Integer(0, 12),
+      "Times every cell of the scene's mesh is split in 2^dim after it is "
+      "built, in [0, 12] (each one multiplies the cells by 4 in 2-D). "
+      "Curved surfaces stay on their circles. With Mesh = distributed the "
+      "scene's mesh is the coarse mesh every process stores and only the "
+      "refined cells are distributed: a coarse Refinement factor and "
+      "refinements here keep the replicated part small.");
     prm.declare_entry(
       "Partitioner",
-      partitioner_names.name(ParallelParameters().partitioner),
+      partitioner_names.name(defaults.partitioner),
       partitioner_names.pattern(),
-      "How the cells are divided among the MPI processes (every process "
-      "keeps the whole mesh, a parallel::shared::Triangulation, and "
-      "assembles its own cells and the contact conditions of its own "
-      "secondary nodes): 'metis' minimizes the cut between the parts; "
-      "'z-order' cuts a space-filling curve through the cells. Without "
-      "mpirun there is one part and this has no effect.");
+      "Mesh = replicated: how the cells are divided among the MPI "
+      "processes: 'metis' minimizes the cut between the parts; 'z-order' "
+      "cuts a space-filling curve through the cells. Without mpirun there "
+      "is one part and this has no effect.");
+    prm.declare_entry(
+      "Contact cell weight",
+      std::to_string(defaults.contact_cell_weight),
+      Patterns::Integer(1, 1000),
+      "Mesh = distributed: the load of a cell with a face on a secondary "
+      "contact surface, in units of a bulk cell's, in [1, 1000], so that "
+      "the contact work is balanced and not only the cells "
+      "(doc/parallel.md has the measured ratio of the costs).");
   }
 
   void
   ParallelParameters::parse_parameters(ParameterHandler &prm)
   {
-    partitioner = partitioner_names.value(prm.get("Partitioner"));
+    partitioner         = partitioner_names.value(prm.get("Partitioner"));
+    mesh                = mesh_names.value(prm.get("Mesh"));
+    global_refinements  = prm.get_integer("Global refinements");
+    contact_cell_weight = prm.get_integer("Contact cell weight");
   }
 
   const std::string &

@@ -22,6 +22,7 @@
 #include <array>
 #include <cmath>
 #include <csignal>
+#include <deal.II/distributed/tria.h>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -123,18 +124,46 @@ namespace ContactDynamics
     prm.leave_subsection();
 
     mechanics = std::make_unique<SolidMechanics<dim>>(dof_handler, bodies);
-    // every process keeps the whole mesh: the contact needs the whole
-    // surfaces, and the meshes of 2-D contact scenes are small
-    // (doc/parallel.md)
-    triangulation = std::make_unique<parallel::shared::Triangulation<dim>>(
-      mpi_communicator,
-      Triangulation<dim>::none,
-      false,
-      parallel_parameters.partitioner ==
-          ParallelParameters::Partitioner::metis ?
-        parallel::shared::Triangulation<dim>::partition_metis :
-        parallel::shared::Triangulation<dim>::partition_zorder);
+    if (parallel_parameters.mesh == ParallelParameters::Mesh::distributed)
+      {
+        auto distributed =
+          std::make_unique<parallel::distributed::Triangulation<dim>>(
+            mpi_communicator);
+        // the cells at secondary surfaces carry the contact work too (the
+        // weights are all a cell has: 1000 for a bulk cell)
+        if (contact && parallel_parameters.contact_cell_weight > 1)
+          {
+            const auto ids    = contact->secondary_boundary_ids();
+            const auto weight = parallel_parameters.contact_cell_weight;
+            distributed->signals.weight.connect(
+              [ids, weight](
+                const typename Triangulation<dim>::cell_iterator &cell,
+                const typename Triangulation<dim>::CellStatus) -> unsigned int {
+                for (const auto &face : cell->face_iterators())
+                  if (face->at_boundary() &&
+                      std::find(ids.begin(), ids.end(), face->boundary_id()) !=
+                        ids.end())
+                    return 1000 * weight;
+                return 1000;
+              });
+          }
+        triangulation = std::move(distributed);
+      }
+    else
+      triangulation = std::make_unique<parallel::shared::Triangulation<dim>>(
+        mpi_communicator,
+        Triangulation<dim>::none,
+        false,
+        parallel_parameters.partitioner ==
+            ParallelParameters::Partitioner::metis ?
+          parallel::shared::Triangulation<dim>::partition_metis :
+          parallel::shared::Triangulation<dim>::partition_zorder);
     scene.create_triangulation(*triangulation);
+    triangulation->refine_global(parallel_parameters.global_refinements);
+    if (auto distributed =
+          dynamic_cast<parallel::distributed::Triangulation<dim> *>(
+            triangulation.get()))
+      distributed->repartition();
     dof_handler.reinit(*triangulation);
     timer = std::make_unique<TimerOutput>(comm,
                                           pcout,
@@ -625,7 +654,7 @@ namespace ContactDynamics
                                               std::vector<std::string>());
 
     pcout << "Scene '" << scene.name()
-          << "': " << triangulation->n_active_cells() << " cells, "
+          << "': " << triangulation->n_global_active_cells() << " cells, "
           << dof_handler.n_dofs() << " unknowns, " << bodies.size() << " bod"
           << (bodies.size() == 1 ? "y" : "ies") << "; linear solver "
           << linear_solver_name << std::endl;
@@ -643,8 +672,11 @@ namespace ContactDynamics
                                  contact ? contact->n_owned_contact_nodes() :
                                            0u);
         pcout << n_processes << " MPI processes ("
-              << parallel_parameters.partitioner_name()
-              << " partition); cells / unknowns / secondary contact nodes:";
+              << (parallel_parameters.mesh ==
+                      ParallelParameters::Mesh::distributed ?
+                    std::string("distributed mesh") :
+                    parallel_parameters.partitioner_name() + " partition")
+              << "); cells / unknowns / secondary contact nodes:";
         for (unsigned int p = 0; p < cells.size(); ++p)
           pcout << (p ? ", " : " ") << cells[p] << " / " << unknowns[p] << " / "
                 << nodes[p];

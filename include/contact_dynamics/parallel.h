@@ -95,7 +95,17 @@ namespace ContactDynamics
       z_order
     };
 
-    Partitioner partitioner = Partitioner::metis; // the default
+    enum class Mesh
+    {
+      replicated,
+      distributed
+    };
+
+    // the defaults
+    Partitioner  partitioner         = Partitioner::metis;
+    Mesh         mesh                = Mesh::replicated;
+    unsigned int global_refinements  = 0;
+    unsigned int contact_cell_weight = 10;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -247,13 +247,13 @@ namespace ContactDynamics
     NewtonSolver     newton;
     OutputParameters output_parameters;
 
-    MPI_Comm                                              mpi_communicator;
-    ParallelParameters                                    parallel_parameters;
-    std::unique_ptr<parallel::shared::Triangulation<dim>> triangulation;
-    std::unique_ptr<ContactFormulation<dim>>              contact;
-    std::unique_ptr<FESystem<dim>>                        fe;
-    DoFHandler<dim>                                       dof_handler;
-    IndexSet                                              locally_owned;
+    MPI_Comm                                          mpi_communicator;
+    ParallelParameters                                parallel_parameters;
+    std::unique_ptr<parallel::TriangulationBase<dim>> triangulation;
+    std::unique_ptr<ContactFormulation<dim>>          contact;
+    std::unique_ptr<FESystem<dim>>                    fe;
+    DoFHandler<dim>                                   dof_handler;
+    IndexSet                                          locally_owned;
     // owned, neighbours of owned cells, and every contact surface dof
     IndexSet                             locally_relevant;
     AffineConstraints<double>            increment_constraints;

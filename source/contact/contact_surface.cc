@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 
 #include <deal.II/fe/fe.h>
 
@@ -24,49 +25,83 @@ namespace ContactDynamics
     reference_weight.clear();
     depth.clear();
 
-    std::map<unsigned int, unsigned int> vertex_to_node;
+    // The faces of the locally owned cells, oriented there (outward normal
+    // = tangent turned clockwise), then gathered: every process gets the
+    // whole surface, O(surface) data, also from a distributed mesh. A
+    // record is x0, x1, the dofs of both nodes, depth, and whether the
+    // face runs from the second to the first node.
+    const unsigned int  record_size = 2 * dim + 2 * n_node_components + 2;
+    std::vector<double> records;
     std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() &&
-            std::find(ids.begin(), ids.end(), cell->face(f)->boundary_id()) !=
-              ids.end())
-          {
-            cell->get_dof_indices(cell_dofs);
-            std::array<unsigned int, 2> face_nodes;
-            for (unsigned int v = 0; v < 2; ++v)
-              {
-                const unsigned int cell_vertex =
-                  GeometryInfo<dim>::face_to_cell_vertices(f, v);
-                const unsigned int vertex = cell->vertex_index(cell_vertex);
-                auto               it     = vertex_to_node.find(vertex);
-                if (it == vertex_to_node.end())
-                  {
-                    it = vertex_to_node.emplace(vertex, reference.size()).first;
-                    reference.push_back(cell->vertex(cell_vertex));
-                    std::vector<types::global_dof_index> node_dofs;
-                    for (unsigned int c = 0; c < n_node_components; ++c)
-                      node_dofs.push_back(
-                        cell_dofs[fe.component_to_system_index(c,
-                                                               cell_vertex)]);
-                    dofs.push_back(node_dofs);
-                    node_faces.emplace_back();
-                  }
-                face_nodes[v] = it->second;
-              }
-            // outward normal = tangent turned clockwise
-            const Tensor<1, dim> t =
-              reference[face_nodes[1]] - reference[face_nodes[0]];
-            Tensor<1, dim> n;
-            n[0] = t[1];
-            n[1] = -t[0];
-            if (n * (cell->face(f)->center() - cell->center()) < 0)
-              std::swap(face_nodes[0], face_nodes[1]);
-            for (const unsigned int node : face_nodes)
-              node_faces[node].push_back(faces.size());
-            faces.push_back(face_nodes);
-            depth.push_back(cell->measure() / cell->face(f)->measure());
-          }
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              std::find(ids.begin(), ids.end(), cell->face(f)->boundary_id()) !=
+                ids.end())
+            {
+              cell->get_dof_indices(cell_dofs);
+              const std::array<unsigned int, 2> v{
+                {GeometryInfo<dim>::face_to_cell_vertices(f, 0),
+                 GeometryInfo<dim>::face_to_cell_vertices(f, 1)}};
+              const Tensor<1, dim> t = cell->vertex(v[1]) - cell->vertex(v[0]);
+              Tensor<1, dim>       n;
+              n[0] = t[1];
+              n[1] = -t[0];
+              for (const unsigned int cell_vertex : v)
+                for (unsigned int d = 0; d < dim; ++d)
+                  records.push_back(cell->vertex(cell_vertex)[d]);
+              for (const unsigned int cell_vertex : v)
+                for (unsigned int c = 0; c < n_node_components; ++c)
+                  records.push_back(
+                    cell_dofs[fe.component_to_system_index(c, cell_vertex)]);
+              records.push_back(cell->measure() / cell->face(f)->measure());
+              records.push_back(n * (cell->face(f)->center() - cell->center()) <
+                                0);
+            }
+    const auto mpi_communicator = dof_handler.get_communicator();
+    const std::vector<std::vector<double>> all_records =
+      Utilities::MPI::n_mpi_processes(mpi_communicator) > 1 ?
+        Utilities::MPI::all_gather(mpi_communicator, records) :
+        std::vector<std::vector<double>>{records};
+
+    // nodes are numbered in the order they first appear; a node is known
+    // by its first dof
+    std::map<types::global_dof_index, unsigned int> dof_to_node;
+    for (const auto &part : all_records)
+      for (unsigned int r = 0; r + record_size <= part.size(); r += record_size)
+        {
+          const double               *record = &part[r];
+          std::array<unsigned int, 2> face_nodes;
+          for (unsigned int v = 0; v < 2; ++v)
+            {
+              const double *node_dofs =
+                record + 2 * dim + v * n_node_components;
+              const auto key =
+                static_cast<types::global_dof_index>(node_dofs[0]);
+              auto it = dof_to_node.find(key);
+              if (it == dof_to_node.end())
+                {
+                  it = dof_to_node.emplace(key, reference.size()).first;
+                  Point<dim> x;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    x[d] = record[v * dim + d];
+                  reference.push_back(x);
+                  dofs.emplace_back();
+                  for (unsigned int c = 0; c < n_node_components; ++c)
+                    dofs.back().push_back(
+                      static_cast<types::global_dof_index>(node_dofs[c]));
+                  node_faces.emplace_back();
+                }
+              face_nodes[v] = it->second;
+            }
+          if (record[record_size - 1] != 0)
+            std::swap(face_nodes[0], face_nodes[1]);
+          for (const unsigned int node : face_nodes)
+            node_faces[node].push_back(faces.size());
+          faces.push_back(face_nodes);
+          depth.push_back(record[record_size - 2]);
+        }
 
     reference_weight.assign(reference.size(), 0.);
     for (const auto &face : faces)

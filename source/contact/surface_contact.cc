@@ -188,6 +188,16 @@ namespace ContactDynamics
   }
 
   template <int dim>
+  std::vector<types::boundary_id>
+  SurfaceContact<dim>::secondary_boundary_ids() const
+  {
+    std::vector<types::boundary_id> ids;
+    for (const ContactPair &pair : contact.pairs)
+      ids.insert(ids.end(), pair.secondary.begin(), pair.secondary.end());
+    return ids;
+  }
+
+  template <int dim>
   void
   SurfaceContact<dim>::setup(const DoFHandler<dim> &dof_handler)
   {

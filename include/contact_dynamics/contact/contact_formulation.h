@@ -123,6 +123,13 @@ namespace ContactDynamics
     virtual void
     setup(const DoFHandler<dim> &dof_handler) = 0;
 
+    /**
+     * The boundary ids of the secondary surfaces: their cells carry the
+     * contact work (weighted partitioning).
+     */
+    virtual std::vector<types::boundary_id>
+    secondary_boundary_ids() const = 0;
+
     /** Extra degrees of freedom held at zero (homogeneous constraints). */
     virtual void
     add_constraints(AffineConstraints<double> &constraints) const = 0;

@@ -89,6 +89,9 @@ namespace ContactDynamics
     void
     setup(const DoFHandler<dim> &dof_handler) override;
 
+    std::vector<types::boundary_id>
+    secondary_boundary_ids() const override;
+
     void
     add_constraints(AffineConstraints<double> &constraints) const override;
 
