@@ -254,8 +254,18 @@ namespace ContactDynamics
     // Dirichlet degrees of freedom: Newton increments vanish there; so do
     // the multipliers the contact formulation does not use.
     increment_constraints.clear();
+    IndexSet prescribed(dof_handler.n_dofs());
     for (const auto &p : dirichlet.values(dof_handler, 0.))
-      increment_constraints.add_line(p.first);
+      prescribed.add_index(p.first);
+    // a process assembles contact rows of surface nodes whose cells it
+    // may not have (on a distributed mesh): it must know which are held
+    if (contact)
+      {
+        IndexSet held = prescribed & contact->surface_dofs();
+        prescribed.add_indices(union_over_processes(held, mpi_communicator));
+      }
+    for (const auto i : prescribed)
+      increment_constraints.add_line(i);
     if (contact)
       contact->add_constraints(increment_constraints);
     increment_constraints.close();
