@@ -274,7 +274,9 @@ namespace ContactDynamics
           const Vec<Number> &y0 = m.xp.at(p.faces[pf][0]);
           const Vec<Number> &y1 = m.xp.at(p.faces[pf][1]);
           Number             lo, hi;
-          if (scalar(SegmentGeometry::face_normal(y0, y1)) * scalar(m.face_n) >=
+          // (in double: the test needs no derivatives)
+          if (SegmentGeometry::face_normal(scalar(y0), scalar(y1)) *
+                  scalar(m.face_n) >=
                 0 ||
               !segment_bounds(m, y0, y1, exact, lo, hi))
             continue;
@@ -423,7 +425,9 @@ namespace ContactDynamics
     // The directions w_j d(g_j / w_j)/du_i of the normal force (i over the
     // positions, j over the face's nodes) and their derivatives weighted
     // with the multipliers, hessian[i n + l] = sum_j lambda_j
-    // d direction[i][j]/du_l: AD2 is a Fad of Fads in the positions only.
+    // d direction[i][j]/du_l. AD2 is a Fad of Fads in the positions that
+    // the gaps depend on, `seeded` (indices i): its cost grows with the
+    // square of their number.
     template <typename AD2, int dim, typename PairData>
     void
     exact_directions(
@@ -431,6 +435,7 @@ namespace ContactDynamics
       const unsigned int e,
       const std::vector<std::pair<const ContactSurface<dim> *, unsigned int>>
                                                  &nodes,
+      const std::vector<unsigned int>            &seeded,
       const std::vector<types::global_dof_index> &unknowns,
       const TrialState                           &state,
       const QGauss<1>                            &gauss,
@@ -442,8 +447,9 @@ namespace ContactDynamics
       using Inner                    = typename AD2::value_type;
       const auto        &s           = pair.secondary;
       const unsigned int n_positions = 2 * nodes.size();
+      const unsigned int n_seeded    = seeded.size();
       MortarPatch<AD2>   m2;
-      for (unsigned int k = 0; k < nodes.size(); ++k)
+      for (unsigned int k = 0, v = 0; k < nodes.size(); ++k)
         {
           auto &x = (nodes[k].first == &s ? m2.xs : m2.xp)[nodes[k].second];
           for (unsigned int d = 0; d < 2; ++d)
@@ -452,7 +458,13 @@ namespace ContactDynamics
               const double       value =
                 nodes[k].first->reference[nodes[k].second][d] +
                 state.u(unknowns[i]);
-              x[d] = AD2(n_positions, i, Inner(n_positions, i, value));
+              if (v < n_seeded && seeded[v] == i)
+                {
+                  x[d] = AD2(n_seeded, v, Inner(n_seeded, v, value));
+                  ++v;
+                }
+              else
+                x[d] = AD2(value);
             }
         }
       set_face_geometry(s, e, true, m2);
@@ -461,26 +473,26 @@ namespace ContactDynamics
         m2,
         mortar_segments(pair, e, m2, true, minimum_covered_fraction),
         gauss);
-      AD2 ratio[2];
+      AD2 ratio[2] = {AD2(0.), AD2(0.)};
       for (unsigned int j = 0; j < 2; ++j)
         if (scalar(f.weight[j]) > 0)
           ratio[j] = f.gap[j] / f.weight[j];
-      for (unsigned int i = 0; i < n_positions; ++i)
+      for (unsigned int v = 0; v < n_seeded; ++v)
         {
-          Inner d[2];
+          Inner d[2] = {Inner(0.), Inner(0.)};
           for (unsigned int j = 0; j < 2; ++j)
             {
-              if (scalar(f.weight[j]) > 0 && i < unsigned(ratio[j].size()))
-                d[j] = f.weight[j].val() * ratio[j].dx(i);
-              direction[i][j] = d[j].val();
+              if (scalar(f.weight[j]) > 0 && v < unsigned(ratio[j].size()))
+                d[j] = f.weight[j].val() * ratio[j].dx(v);
+              direction[seeded[v]][j] = d[j].val();
             }
-          for (unsigned int l = 0; l < n_positions; ++l)
+          for (unsigned int w = 0; w < n_seeded; ++w)
             {
               double h = 0;
               for (unsigned int j = 0; j < 2; ++j)
-                if (d[j].size() > int(l))
-                  h += lambda[j] * d[j].dx(l);
-              hessian[i * n_positions + l] = h;
+                if (d[j].size() > int(w))
+                  h += lambda[j] * d[j].dx(w);
+              hessian[seeded[v] * n_positions + seeded[w]] = h;
             }
         }
     }
@@ -578,20 +590,34 @@ namespace ContactDynamics
     // direction[i][j] = w_j d(g_j / w_j)/du_i, with its derivatives
     std::vector<std::array<double, 2>> direction(n_positions, {{0., 0.}});
     std::vector<double> hessian(exact ? n_positions * n_positions : 0);
-    if (exact)
-      ContactAD::dispatch_second(n_positions, [&](const auto zero) {
-        exact_directions<std::decay_t<decltype(zero)>>(pair,
-                                                       e,
-                                                       nodes,
-                                                       unknowns,
-                                                       state,
-                                                       gauss,
-                                                       minimum_covered_fraction,
-                                                       lambda,
-                                                       direction,
-                                                       hessian);
-      });
-    else
+    if (exact && !segments.faces.empty())
+      {
+        // the positions of the secondary nodes and of the primary nodes
+        // of the covering faces: the gaps do not depend on the others
+        std::set<unsigned int> covering;
+        for (const unsigned int pf : segments.faces)
+          covering.insert(p.faces[pf].begin(), p.faces[pf].end());
+        std::vector<unsigned int> seeded;
+        for (unsigned int k = 0; k < nodes.size(); ++k)
+          if (nodes[k].first == &s || covering.count(nodes[k].second) > 0)
+            for (unsigned int d = 0; d < 2; ++d)
+              seeded.push_back(2 * k + d);
+        ContactAD::dispatch_second(seeded.size(), [&](const auto zero) {
+          exact_directions<std::decay_t<decltype(zero)>>(
+            pair,
+            e,
+            nodes,
+            seeded,
+            unknowns,
+            state,
+            gauss,
+            minimum_covered_fraction,
+            lambda,
+            direction,
+            hessian);
+        });
+      }
+    else if (!exact)
       {
         MortarPatch<AD> exact_patch = m;
         set_face_geometry(s, e, true, exact_patch);

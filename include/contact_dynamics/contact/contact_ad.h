@@ -10,6 +10,7 @@
 #include <contact_dynamics/contact/segment_geometry.h>
 #include <contact_dynamics/contact/surface_contact.h>
 
+#include <Sacado_Fad_SFad.hpp>
 #include <Sacado_Fad_SLFad.hpp>
 #include <type_traits>
 #include <utility>
@@ -19,6 +20,24 @@ DEAL_II_NAMESPACE_OPEN
 // deal.II's tensors know DFad only: the same for the static storage
 namespace internal
 {
+  template <typename T, int N>
+  struct ProductTypeImpl<Sacado::Fad::SFad<T, N>, double>
+  {
+    using type = Sacado::Fad::SFad<T, N>;
+  };
+
+  template <typename T, int N>
+  struct ProductTypeImpl<double, Sacado::Fad::SFad<T, N>>
+  {
+    using type = Sacado::Fad::SFad<T, N>;
+  };
+
+  template <typename T, typename U, int N>
+  struct ProductTypeImpl<Sacado::Fad::SFad<T, N>, Sacado::Fad::SFad<U, N>>
+  {
+    using type = Sacado::Fad::SFad<typename ProductType<T, U>::type, N>;
+  };
+
   template <typename T, int N>
   struct ProductTypeImpl<Sacado::Fad::SLFad<T, N>, double>
   {
@@ -37,6 +56,12 @@ namespace internal
     using type = Sacado::Fad::SLFad<typename ProductType<T, U>::type, N>;
   };
 } // namespace internal
+
+template <typename T, int N>
+struct EnableIfScalar<Sacado::Fad::SFad<T, N>>
+{
+  using type = Sacado::Fad::SFad<T, N>;
+};
 
 template <typename T, int N>
 struct EnableIfScalar<Sacado::Fad::SLFad<T, N>>
@@ -80,15 +105,27 @@ namespace ContactDynamics
     /** The width of the static second derivatives of dispatch_second(). */
     constexpr unsigned int static_width_second = 24;
 
+    /** Second derivatives in exactly n variables: loops of fixed length. */
+    template <int n>
+    using FixedAD2 = Sacado::Fad::SFad<Sacado::Fad::SFad<double, n>, n>;
+
     /**
      * Calls f(Number()) with a Fad of Fads for second derivatives in n
-     * variables: static if they fit, else dynamic.
+     * variables: of fixed length for the common patch sizes (their cost
+     * grows with n^2, and the nested loops of variable length dominated),
+     * static if they fit, else dynamic.
      */
     template <typename Function>
     void
     dispatch_second(const unsigned int n, const Function &f)
     {
-      if (n <= static_width_second)
+      if (n == 12)
+        f(FixedAD2<12>(0.));
+      else if (n == 14)
+        f(FixedAD2<14>(0.));
+      else if (n == 16)
+        f(FixedAD2<16>(0.));
+      else if (n <= static_width_second)
         f(Sacado::Fad::SLFad<StaticAD<static_width_second>,
                              static_width_second>());
       else
