@@ -11,9 +11,6 @@
 
 namespace ContactDynamics
 {
-  using ContactAD::AD;
-  using ContactAD::constant;
-  using ContactAD::value;
   using SegmentGeometry::Vec;
 
   void
@@ -97,9 +94,6 @@ namespace ContactDynamics
 
   namespace
   {
-    // second derivatives: the Hessian of the contact potential
-    using AD2 = Sacado::Fad::DFad<AD>;
-
     template <typename Number>
     double
     scalar(const Number &x)
@@ -166,14 +160,15 @@ namespace ContactDynamics
     }
 
     // what the mortar segments of a patch add up
+    template <typename Number>
     struct SegmentSums
     {
       // residual contributions of the tangential traction (the normal
       // ones derive from the weighted gaps) and, for approximate
       // Jacobians, of the normal traction along the nodal normals
-      std::map<types::global_dof_index, AD>     rows, normal_rows;
+      std::map<types::global_dof_index, Number> rows, normal_rows;
       std::map<types::global_dof_index, double> tangential_rows;
-      AD gap[2], weight[2], gap_rate[2], slip_rate[2];
+      Number gap[2], weight[2], gap_rate[2], slip_rate[2];
     };
 
     // the parameters lo < hi on the secondary face of the segment that the
@@ -279,7 +274,9 @@ namespace ContactDynamics
           const Vec<Number> &y0 = m.xp.at(p.faces[pf][0]);
           const Vec<Number> &y1 = m.xp.at(p.faces[pf][1]);
           Number             lo, hi;
-          if (scalar(SegmentGeometry::face_normal(y0, y1)) * scalar(m.face_n) >=
+          // (in double: the test needs no derivatives)
+          if (SegmentGeometry::face_normal(scalar(y0), scalar(y1)) *
+                  scalar(m.face_n) >=
                 0 ||
               !segment_bounds(m, y0, y1, exact, lo, hi))
             continue;
@@ -345,36 +342,36 @@ namespace ContactDynamics
 
     // the gap, weight, rate and force integrals over the segment [lo, hi]
     // of face e that the primary face pf covers; `rates`: gap rates too
-    template <typename PairData>
+    template <typename Number, typename PairData>
     void
-    integrate_segment(const PairData                         &pair,
-                      const unsigned int                      e,
-                      const unsigned int                      pf,
-                      const MortarPatch<AD>                  &m,
-                      const AD                               &lo,
-                      const AD                               &hi,
-                      const std::array<std::array<AD, 2>, 2> &dual,
-                      const QGauss<1>                        &gauss,
-                      const bool                              rates,
-                      const bool                              exact,
-                      SegmentSums                            &sums)
+    integrate_segment(const PairData                             &pair,
+                      const unsigned int                          e,
+                      const unsigned int                          pf,
+                      const MortarPatch<Number>                  &m,
+                      const Number                               &lo,
+                      const Number                               &hi,
+                      const std::array<std::array<Number, 2>, 2> &dual,
+                      const QGauss<1>                            &gauss,
+                      const bool                                  rates,
+                      const bool                                  exact,
+                      SegmentSums<Number>                        &sums)
     {
-      const auto    &s        = pair.secondary;
-      const auto    &p        = pair.primary;
-      const auto    &face     = s.faces[e];
-      const bool     friction = pair.friction_coefficient > 0;
-      const Vec<AD> &y0       = m.xp.at(p.faces[pf][0]);
-      const Vec<AD> &y1       = m.xp.at(p.faces[pf][1]);
+      const auto        &s        = pair.secondary;
+      const auto        &p        = pair.primary;
+      const auto        &face     = s.faces[e];
+      const bool         friction = pair.friction_coefficient > 0;
+      const Vec<Number> &y0       = m.xp.at(p.faces[pf][0]);
+      const Vec<Number> &y1       = m.xp.at(p.faces[pf][1]);
       for (unsigned int q = 0; q < gauss.size(); ++q)
         {
-          const AD   xi  = lo + (hi - lo) * gauss.point(q)[0];
-          const AD   JxW = gauss.weight(q) * (hi - lo) * m.half_length;
-          const auto N   = SegmentGeometry::shape(xi);
-          const auto psi = MortarGeometry::dual_shape(xi, dual);
-          Vec<AD>    normal;
-          AD         eta;
-          const AD   g  = point_gap(m, xi, y0, y1, exact, normal, eta);
-          const auto Np = SegmentGeometry::shape(eta);
+          const Number xi  = lo + (hi - lo) * gauss.point(q)[0];
+          const Number JxW = gauss.weight(q) * (hi - lo) * m.half_length;
+          const auto   N   = SegmentGeometry::shape(xi);
+          const auto   psi = MortarGeometry::dual_shape(xi, dual);
+          Vec<Number>  normal;
+          Number       eta;
+          const Number g  = point_gap(m, xi, y0, y1, exact, normal, eta);
+          const auto   Np = SegmentGeometry::shape(eta);
           for (unsigned int i = 0; i < 2; ++i)
             {
               sums.gap[i] += psi[i] * g * JxW;
@@ -382,11 +379,11 @@ namespace ContactDynamics
             }
           if (rates || friction)
             {
-              const Vec<AD> v_s =
+              const Vec<Number> v_s =
                 N[0] * m.vs.at(face[0]) + N[1] * m.vs.at(face[1]);
-              const Vec<AD> v_p = Np[0] * m.vp.at(p.faces[pf][0]) +
-                                  Np[1] * m.vp.at(p.faces[pf][1]);
-              const Vec<AD> v_rel = v_s - v_p;
+              const Vec<Number> v_p = Np[0] * m.vp.at(p.faces[pf][0]) +
+                                      Np[1] * m.vp.at(p.faces[pf][1]);
+              const Vec<Number> v_rel = v_s - v_p;
               for (unsigned int i = 0; i < 2; ++i)
                 {
                   if (rates)
@@ -399,10 +396,10 @@ namespace ContactDynamics
           // tangential traction z_t = sum_j psi_j lambda_t,j t_j on both
           // sides; the normal one along the nodal normals for approximate
           // Jacobians
-          const Vec<AD> z_t = AD(psi[0] * m.lambda_t[0]) * m.t0 +
-                              AD(psi[1] * m.lambda_t[1]) * m.t1;
-          const Vec<AD> z_n =
-            AD(psi[0] * m.lambda[0]) * m.n0 + AD(psi[1] * m.lambda[1]) * m.n1;
+          const Vec<Number> z_t = Number(psi[0] * m.lambda_t[0]) * m.t0 +
+                                  Number(psi[1] * m.lambda_t[1]) * m.t1;
+          const Vec<Number> z_n = Number(psi[0] * m.lambda[0]) * m.n0 +
+                                  Number(psi[1] * m.lambda[1]) * m.n1;
           for (unsigned int i = 0; i < 2; ++i)
             for (unsigned int d = 0; d < 2; ++d)
               {
@@ -424,6 +421,81 @@ namespace ContactDynamics
               }
         }
     }
+
+    // The directions w_j d(g_j / w_j)/du_i of the normal force (i over the
+    // positions, j over the face's nodes) and their derivatives weighted
+    // with the multipliers, hessian[i n + l] = sum_j lambda_j
+    // d direction[i][j]/du_l. AD2 is a Fad of Fads in the positions that
+    // the gaps depend on, `seeded` (indices i): its cost grows with the
+    // square of their number.
+    template <typename AD2, int dim, typename PairData>
+    void
+    exact_directions(
+      const PairData    &pair,
+      const unsigned int e,
+      const std::vector<std::pair<const ContactSurface<dim> *, unsigned int>>
+                                                 &nodes,
+      const std::vector<unsigned int>            &seeded,
+      const std::vector<types::global_dof_index> &unknowns,
+      const TrialState                           &state,
+      const QGauss<1>                            &gauss,
+      const double                                minimum_covered_fraction,
+      const double                                lambda[2],
+      std::vector<std::array<double, 2>>         &direction,
+      std::vector<double>                        &hessian)
+    {
+      using Inner                    = typename AD2::value_type;
+      const auto        &s           = pair.secondary;
+      const unsigned int n_positions = 2 * nodes.size();
+      const unsigned int n_seeded    = seeded.size();
+      MortarPatch<AD2>   m2;
+      for (unsigned int k = 0, v = 0; k < nodes.size(); ++k)
+        {
+          auto &x = (nodes[k].first == &s ? m2.xs : m2.xp)[nodes[k].second];
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              const unsigned int i = 2 * k + d;
+              const double       value =
+                nodes[k].first->reference[nodes[k].second][d] +
+                state.u(unknowns[i]);
+              if (v < n_seeded && seeded[v] == i)
+                {
+                  x[d] = AD2(n_seeded, v, Inner(n_seeded, v, value));
+                  ++v;
+                }
+              else
+                x[d] = AD2(value);
+            }
+        }
+      set_face_geometry(s, e, true, m2);
+      const auto f = weighted_gaps(
+        pair,
+        m2,
+        mortar_segments(pair, e, m2, true, minimum_covered_fraction),
+        gauss);
+      AD2 ratio[2] = {AD2(0.), AD2(0.)};
+      for (unsigned int j = 0; j < 2; ++j)
+        if (scalar(f.weight[j]) > 0)
+          ratio[j] = f.gap[j] / f.weight[j];
+      for (unsigned int v = 0; v < n_seeded; ++v)
+        {
+          Inner d[2] = {Inner(0.), Inner(0.)};
+          for (unsigned int j = 0; j < 2; ++j)
+            {
+              if (scalar(f.weight[j]) > 0 && v < unsigned(ratio[j].size()))
+                d[j] = f.weight[j].val() * ratio[j].dx(v);
+              direction[seeded[v]][j] = d[j].val();
+            }
+          for (unsigned int w = 0; w < n_seeded; ++w)
+            {
+              double h = 0;
+              for (unsigned int j = 0; j < 2; ++j)
+                if (d[j].size() > int(w))
+                  h += lambda[j] * d[j].dx(w);
+              hessian[seeded[v] * n_positions + seeded[w]] = h;
+            }
+        }
+    }
   } // namespace
 
   template <int dim>
@@ -433,18 +505,39 @@ namespace ContactDynamics
                                      const TrialState  &state,
                                      PatchForces       &forces)
   {
-    const auto &s        = pair.secondary;
-    const auto &p        = pair.primary;
-    const auto &face     = s.faces[e];
-    const auto  unknowns = patch_unknowns(pair, e, pair.candidates[e]);
-    const bool  exact    = this->complementarity.exact_jacobian;
+    const auto unknowns = patch_unknowns(pair, e, pair.candidates[e]);
+    ContactAD::dispatch(unknowns.size(), [&](const auto zero) {
+      assemble_patch_ad<std::decay_t<decltype(zero)>>(pair,
+                                                      e,
+                                                      state,
+                                                      unknowns,
+                                                      forces);
+    });
+  }
+
+
+
+  template <int dim>
+  template <typename AD>
+  void
+  MortarContact<dim>::assemble_patch_ad(
+    PairData                                   &pair,
+    const unsigned int                          e,
+    const TrialState                           &state,
+    const std::vector<types::global_dof_index> &unknowns,
+    PatchForces                                &forces)
+  {
+    const auto &s     = pair.secondary;
+    const auto &p     = pair.primary;
+    const auto &face  = s.faces[e];
+    const bool  exact = this->complementarity.exact_jacobian;
 
     // independent variables: positions of the secondary nodes of the face
     // and their neighbours, of the primary nodes, then the multipliers
-    ContactAD::NodeVariables<dim> variables(unknowns, state);
-    MortarPatch<AD>               m;
-    const unsigned int            before = s.neighbour(face[0], e);
-    const unsigned int            after  = s.neighbour(face[1], e);
+    ContactAD::NodeVariables<dim, AD> variables(unknowns, state);
+    MortarPatch<AD>                   m;
+    const unsigned int                before = s.neighbour(face[0], e);
+    const unsigned int                after  = s.neighbour(face[1], e);
     std::vector<std::pair<const ContactSurface<dim> *, unsigned int>> nodes;
     for (const unsigned int node : {before, face[0], face[1], after})
       if (node != ContactSurface<dim>::invalid)
@@ -466,8 +559,8 @@ namespace ContactDynamics
 
     const QGauss<1> gauss(quadrature_points);
     // (the first rate of a held node, the velocity-level condition)
-    const bool  rates = this->complementarity.holds_contact() && state.dynamic;
-    SegmentSums sums;
+    const bool rates = this->complementarity.holds_contact() && state.dynamic;
+    SegmentSums<AD> sums;
     for (unsigned int i = 0; i < 2; ++i)
       sums.gap[i] = sums.weight[i] = sums.gap_rate[i] = sums.slip_rate[i] =
         AD(0.);
@@ -495,39 +588,36 @@ namespace ContactDynamics
     // derivatives (or, approximate, the nodal-normal traction's).
     const double lambda[2] = {m.lambda[0].val(), m.lambda[1].val()};
     // direction[i][j] = w_j d(g_j / w_j)/du_i, with its derivatives
-    std::vector<std::array<AD, 2>> direction(n_positions, {{AD(0.), AD(0.)}});
-    if (exact)
+    std::vector<std::array<double, 2>> direction(n_positions, {{0., 0.}});
+    std::vector<double> hessian(exact ? n_positions * n_positions : 0);
+    if (exact && !segments.faces.empty())
       {
-        MortarPatch<AD2> m2;
+        // the positions of the secondary nodes and of the primary nodes
+        // of the covering faces: the gaps do not depend on the others
+        std::set<unsigned int> covering;
+        for (const unsigned int pf : segments.faces)
+          covering.insert(p.faces[pf].begin(), p.faces[pf].end());
+        std::vector<unsigned int> seeded;
         for (unsigned int k = 0; k < nodes.size(); ++k)
-          {
-            auto &x = (nodes[k].first == &s ? m2.xs : m2.xp)[nodes[k].second];
+          if (nodes[k].first == &s || covering.count(nodes[k].second) > 0)
             for (unsigned int d = 0; d < 2; ++d)
-              {
-                const unsigned int i = 2 * k + d;
-                const double       value =
-                  nodes[k].first->reference[nodes[k].second][d] +
-                  state.u(unknowns[i]);
-                x[d] = AD2(n_positions, i, AD(n_positions, i, value));
-              }
-          }
-        set_face_geometry(s, e, true, m2);
-        const auto f = weighted_gaps(
-          pair,
-          m2,
-          mortar_segments(pair, e, m2, true, minimum_covered_fraction),
-          gauss);
-        for (unsigned int j = 0; j < 2; ++j)
-          if (scalar(f.weight[j]) > 0)
-            {
-              const AD2 ratio = f.gap[j] / f.weight[j];
-              for (unsigned int i = 0;
-                   i < n_positions && i < unsigned(ratio.size());
-                   ++i)
-                direction[i][j] = f.weight[j].val() * ratio.dx(i);
-            }
+              seeded.push_back(2 * k + d);
+        ContactAD::dispatch_second(seeded.size(), [&](const auto zero) {
+          exact_directions<std::decay_t<decltype(zero)>>(
+            pair,
+            e,
+            nodes,
+            seeded,
+            unknowns,
+            state,
+            gauss,
+            minimum_covered_fraction,
+            lambda,
+            direction,
+            hessian);
+        });
       }
-    else
+    else if (!exact)
       {
         MortarPatch<AD> exact_patch = m;
         set_face_geometry(s, e, true, exact_patch);
@@ -542,9 +632,9 @@ namespace ContactDynamics
               const double ratio = f.gap[j].val() / f.weight[j].val();
               for (unsigned int i = 0; i < n_positions; ++i)
                 direction[i][j] =
-                  AD((f.gap[j].size() > int(i) ? f.gap[j].dx(i) : 0.) -
-                     ratio *
-                       (f.weight[j].size() > int(i) ? f.weight[j].dx(i) : 0.));
+                  (f.gap[j].size() > int(i) ? f.gap[j].dx(i) : 0.) -
+                  ratio *
+                    (f.weight[j].size() > int(i) ? f.weight[j].dx(i) : 0.);
             }
       }
     for (unsigned int i = 0; i < n_positions; ++i)
@@ -553,23 +643,17 @@ namespace ContactDynamics
         double                            value = 0;
         for (unsigned int j = 0; j < 2; ++j)
           {
-            value -= lambda[j] * direction[i][j].val();
+            value -= lambda[j] * direction[i][j];
             // d / d lambda_j
-            if (direction[i][j].val() != 0)
+            if (direction[i][j] != 0)
               derivatives.emplace_back(unknowns[n_positions + j],
-                                       -direction[i][j].val());
+                                       -direction[i][j]);
           }
         if (exact)
           {
             for (unsigned int l = 0; l < n_positions; ++l)
-              {
-                double h = 0;
-                for (unsigned int j = 0; j < 2; ++j)
-                  if (direction[i][j].size() > int(l))
-                    h += lambda[j] * direction[i][j].dx(l);
-                if (h != 0)
-                  derivatives.emplace_back(unknowns[l], -h);
-              }
+              if (const double h = hessian[i * n_positions + l]; h != 0)
+                derivatives.emplace_back(unknowns[l], -h);
           }
         else
           {

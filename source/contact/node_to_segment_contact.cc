@@ -8,7 +8,6 @@
 
 namespace ContactDynamics
 {
-  using ContactAD::AD;
   using ContactAD::constant;
   using ContactAD::value;
   using SegmentGeometry::Vec;
@@ -118,7 +117,7 @@ namespace ContactDynamics
     // the primary face closest to secondary node j at x and the parameter
     // of the projection on it; `previous`: the face of node j's projection
     // in the previous iteration of this attempt
-    template <int dim, typename PairData>
+    template <int dim, typename PairData, typename AD>
     unsigned int
     closest_face(const PairData                        &pair,
                  const unsigned int                     j,
@@ -186,7 +185,7 @@ namespace ContactDynamics
 
     // the primary normal at eta on the face, blended within
     // `smoothing_distance` of its ends into the neighbours' normals
-    template <int dim, typename PairData>
+    template <int dim, typename PairData, typename AD>
     Vec<AD>
     smoothed_normal(const PairData                        &pair,
                     const unsigned int                     face,
@@ -231,15 +230,36 @@ namespace ContactDynamics
                                             const TrialState  &state,
                                             PatchForces       &forces)
   {
-    const auto &s        = pair.secondary;
-    const auto &p        = pair.primary;
-    const auto &faces    = pair.candidates[j];
-    const auto  unknowns = patch_unknowns(pair, j, faces);
-    const bool  exact    = this->complementarity.exact_jacobian;
+    const auto unknowns = patch_unknowns(pair, j, pair.candidates[j]);
+    ContactAD::dispatch(unknowns.size(), [&](const auto zero) {
+      assemble_patch_ad<std::decay_t<decltype(zero)>>(pair,
+                                                      j,
+                                                      state,
+                                                      unknowns,
+                                                      forces);
+    });
+  }
 
-    ContactAD::NodeVariables<dim>   variables(unknowns, state);
-    Vec<AD>                         x, v;
-    std::map<unsigned int, Vec<AD>> xp, vp;
+
+
+  template <int dim>
+  template <typename AD>
+  void
+  NodeToSegmentContact<dim>::assemble_patch_ad(
+    PairData                                   &pair,
+    const unsigned int                          j,
+    const TrialState                           &state,
+    const std::vector<types::global_dof_index> &unknowns,
+    PatchForces                                &forces)
+  {
+    const auto &s     = pair.secondary;
+    const auto &p     = pair.primary;
+    const auto &faces = pair.candidates[j];
+    const bool  exact = this->complementarity.exact_jacobian;
+
+    ContactAD::NodeVariables<dim, AD> variables(unknowns, state);
+    Vec<AD>                           x, v;
+    std::map<unsigned int, Vec<AD>>   xp, vp;
     variables.add(s, j, x, v);
     for (const unsigned int node : primary_nodes<dim>(pair, faces))
       variables.add(p, node, xp[node], vp[node]);

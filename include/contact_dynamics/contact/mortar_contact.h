@@ -83,6 +83,15 @@ namespace ContactDynamics
                    PatchForces       &forces) override;
 
   private:
+    /** assemble_patch() with the AD number type AD for `unknowns`. */
+    template <typename AD>
+    void
+    assemble_patch_ad(PairData                                   &pair,
+                      const unsigned int                          patch,
+                      const TrialState                           &state,
+                      const std::vector<types::global_dof_index> &unknowns,
+                      PatchForces                                &forces);
+
     unsigned int quadrature_points;
   };
 } // namespace ContactDynamics

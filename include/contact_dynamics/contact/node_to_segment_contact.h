@@ -85,6 +85,15 @@ namespace ContactDynamics
                    PatchForces       &forces) override;
 
   private:
+    /** assemble_patch() with the AD number type AD for `unknowns`. */
+    template <typename AD>
+    void
+    assemble_patch_ad(PairData                                   &pair,
+                      const unsigned int                          node,
+                      const TrialState                           &state,
+                      const std::vector<types::global_dof_index> &unknowns,
+                      PatchForces                                &forces);
+
     double smoothing_distance;
     // per pair and secondary node: the primary face of the projection at
     // the last committed step, and at the last assembly of this attempt
