@@ -11,6 +11,7 @@
 #include <contact_dynamics/mechanics/solid_mechanics.h>
 #include <contact_dynamics/parallel.h>
 
+#include <algorithm>
 #include <exception>
 
 namespace ContactDynamics
@@ -22,7 +23,9 @@ namespace ContactDynamics
      * scalar base element times unit vectors: displacement dof i of the
      * system element is e_{component[i]} phi_{node[i]}, so that its gradient
      * is e_{component[i]} (x) grad phi_{node[i]}. Working with the scalar
-     * functions avoids FEValuesViews and products with zero entries.
+     * functions avoids FEValuesViews and products with zero entries. Their
+     * gradients come from FEValues or from a cache (the mesh does not move:
+     * total Lagrangian).
      */
     template <int dim>
     struct ScratchData
@@ -50,6 +53,9 @@ namespace ContactDynamics
               }
           }
         u_local.resize(u_dofs.size());
+        n_nodes = fe.base_element(base).n_dofs_per_cell();
+        cell_gradients.resize(quadrature.size() * n_nodes);
+        cell_JxW.resize(quadrature.size());
       }
 
       // WorkStream copies the sample for each thread
@@ -62,12 +68,33 @@ namespace ContactDynamics
       reinit(const typename DoFHandler<dim>::active_cell_iterator &cell)
       {
         fe_values.reinit(typename Triangulation<dim>::cell_iterator(cell));
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          {
+            cell_JxW[q] = fe_values.JxW(q);
+            for (unsigned int a = 0; a < n_nodes; ++a)
+              cell_gradients[q * n_nodes + a] = fe_values.shape_grad(a, q);
+          }
+        reinit(cell_gradients.data(), cell_JxW.data());
+      }
+
+      // gradients[q * n_nodes + a]: of scalar shape function a at point q
+      void
+      reinit(const Tensor<1, dim> *gradients, const double *JxW_values)
+      {
+        this->gradients  = gradients;
+        this->JxW_values = JxW_values;
       }
 
       const Tensor<1, dim> &
       grad(const unsigned int k, const unsigned int q) const
       {
-        return fe_values.shape_grad(node[k], q);
+        return gradients[q * n_nodes + node[k]];
+      }
+
+      double
+      JxW(const unsigned int q) const
+      {
+        return JxW_values[q];
       }
 
       const FiniteElement<dim> &fe;
@@ -75,8 +102,13 @@ namespace ContactDynamics
       FEValues<dim>             fe_values;
       // per displacement dof k: its index in the system element, its
       // component, its scalar shape function
-      std::vector<unsigned int> u_dofs, component, node;
-      std::vector<double>       u_local; // the displacement dofs' values
+      std::vector<unsigned int>   u_dofs, component, node;
+      std::vector<double>         u_local; // the displacement dofs' values
+      unsigned int                n_nodes;
+      std::vector<Tensor<1, dim>> cell_gradients;
+      std::vector<double>         cell_JxW;
+      const Tensor<1, dim>       *gradients  = nullptr;
+      const double               *JxW_values = nullptr;
     };
 
     template <int dim>
@@ -152,7 +184,8 @@ namespace ContactDynamics
           matrix(s.u_dofs[j], s.u_dofs[i]) = matrix(s.u_dofs[i], s.u_dofs[j]);
     }
 
-    // WorkStream over `cells`: exceptions of `worker` reach the caller
+    // WorkStream over `cells` (worker(position in cells, ...)): exceptions
+    // of `worker` reach the caller
     template <typename Iterator, typename Worker, typename Copier, int dim>
     void
     run_on_cells(const std::vector<Iterator> &cells,
@@ -169,9 +202,8 @@ namespace ContactDynamics
           copy.failure = nullptr;
           try
             {
-              scratch.reinit(*cell);
               (*cell)->get_dof_indices(copy.dofs);
-              worker(*cell, scratch, copy);
+              worker(cell, scratch, copy);
             }
           catch (...)
             {
@@ -302,10 +334,25 @@ namespace ContactDynamics
           for (unsigned int k = 0; k < s.u_dofs.size(); ++k)
             copy.rhs(s.u_dofs[k]) += b[s.component[k]] *
                                      s.fe_values.shape_value(s.node[k], q) *
-                                     s.fe_values.JxW(q);
+                                     s.JxW(q);
         body_force_vector.add(copy.dofs, copy.rhs);
       }
     body_force_vector.compress(VectorOperation::add);
+
+    // the nonlinear cells' shape gradients, for every Newton iteration
+    const unsigned int n_q = s.quadrature.size(), n_nodes = s.n_nodes;
+    nonlinear_gradients.resize(nonlinear_cells.size() * n_q * n_nodes);
+    nonlinear_JxW.resize(nonlinear_cells.size() * n_q);
+    for (std::size_t c = 0; c < nonlinear_cells.size(); ++c)
+      {
+        s.reinit(nonlinear_cells[c]);
+        std::copy(s.cell_gradients.begin(),
+                  s.cell_gradients.end(),
+                  nonlinear_gradients.begin() + c * n_q * n_nodes);
+        std::copy(s.cell_JxW.begin(),
+                  s.cell_JxW.end(),
+                  nonlinear_JxW.begin() + c * n_q);
+      }
   }
 
   template <int dim>
@@ -335,7 +382,9 @@ namespace ContactDynamics
     if (rhs)
       *rhs = 0;
     const auto worker =
-      [&](const CellIterator &cell, ScratchData<dim> &s, CopyData<dim> &copy) {
+      [&](const auto &it, ScratchData<dim> &s, CopyData<dim> &copy) {
+        const CellIterator &cell = *it;
+        s.reinit(cell);
         const types::material_id  id = cell->material_id();
         const MaterialParameters &p  = bodies[id].material;
         const double              m =
@@ -345,7 +394,7 @@ namespace ContactDynamics
         copy.matrix    = 0;
         for (unsigned int q = 0; q < s.quadrature.size(); ++q)
           {
-            const double JxW = s.fe_values.JxW(q);
+            const double JxW = s.JxW(q);
             if (m != 0)
               add_mass(m * JxW, q, s, copy.matrix);
             if (c != 0)
@@ -384,10 +433,16 @@ namespace ContactDynamics
     VectorType                      *force,
     MatrixType                      *tangent) const
   {
-    double     energy = 0;
-    const auto worker = [&](const CellIterator &cell,
-                            ScratchData<dim>   &s,
-                            CopyData<dim>      &copy) {
+    double             energy = 0;
+    const unsigned int n_q =
+      nonlinear_JxW.size() / std::max<std::size_t>(nonlinear_cells.size(), 1);
+    const auto worker = [&](const auto       &it,
+                            ScratchData<dim> &s,
+                            CopyData<dim>    &copy) {
+      const CellIterator &cell = *it;
+      const std::size_t   c    = it - nonlinear_cells.begin();
+      s.reinit(&nonlinear_gradients[c * n_q * s.n_nodes],
+               &nonlinear_JxW[c * n_q]);
       const Material<dim> &material = *materials[cell->material_id()];
       const unsigned int   n        = s.u_dofs.size();
       copy.energy                   = 0;
@@ -405,7 +460,7 @@ namespace ContactDynamics
           for (unsigned int k = 0; k < n; ++k)
             grad_u[s.component[k]] += s.u_local[k] * s.grad(k, q);
           material.evaluate(grad_u, P, A, W);
-          const double JxW = s.fe_values.JxW(q);
+          const double JxW = s.JxW(q);
           copy.energy += W * JxW;
           if (force)
             for (unsigned int k = 0; k < n; ++k)

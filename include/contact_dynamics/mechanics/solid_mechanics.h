@@ -158,7 +158,10 @@ namespace ContactDynamics
 
     const AffineConstraints<double> *jacobian_constraints = nullptr;
     std::vector<CellIterator>        owned_cells, nonlinear_cells;
-    VectorType                       body_force_vector;
+    // their shape gradients and JxW at the quadrature points, cell by cell
+    std::vector<Tensor<1, dim>> nonlinear_gradients;
+    std::vector<double>         nonlinear_JxW;
+    VectorType                  body_force_vector;
     // unconstrained, for residuals and energies: mass, damping, stiffness
     // of the linear elastic bodies
     MatrixType mass, damping, linear_stiffness;
