@@ -303,7 +303,11 @@ namespace ContactDynamics
   int
   run_command_line(int argc, char **argv)
   {
-    Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+    // threads for the bulk assembly: the cores of the node shared among
+    // its MPI processes (DEAL_II_NUM_THREADS can limit them)
+    Utilities::MPI::MPI_InitFinalize mpi(argc,
+                                         argv,
+                                         numbers::invalid_unsigned_int);
     const bool root = (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
     const unsigned int n_processes =
       Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);

@@ -269,6 +269,7 @@ namespace ContactDynamics
     if (contact)
       contact->add_constraints(increment_constraints);
     increment_constraints.close();
+    mechanics->setup(increment_constraints);
 
     for (VectorType *vec : {&u,
                             &v,
@@ -282,9 +283,9 @@ namespace ContactDynamics
                             &increment,
                             &body_force})
       vec->reinit(locally_owned, mpi_communicator);
-    for (VectorType *vec : {&u_ghost, &v_ghost, &a_ghost})
+    for (VectorType *vec : {&u_ghost, &v_ghost})
       vec->reinit(locally_owned, locally_relevant, mpi_communicator);
-    mechanics->assemble_body_force(body_force);
+    body_force = mechanics->body_force();
     if (contact)
       contact->update_candidates(ghosted(u, u_ghost));
     // before the sparsity pattern: an iterative solver wants the fill-in
@@ -296,37 +297,13 @@ namespace ContactDynamics
     setup_sparsity();
   }
 
-  namespace
-  {
-    // couplings of the bulk: the first dim components (displacements)
-    // with each other
-    Table<2, DoFTools::Coupling>
-    displacement_coupling(const unsigned int n_components,
-                          const unsigned int dim)
-    {
-      Table<2, DoFTools::Coupling> coupling(n_components, n_components);
-      for (unsigned int c = 0; c < n_components; ++c)
-        for (unsigned int d = 0; d < n_components; ++d)
-          coupling(c, d) =
-            (c < dim && d < dim) ? DoFTools::always : DoFTools::none;
-      return coupling;
-    }
-  } // namespace
-
   template <int dim>
   void
   Simulator<dim>::setup_sparsity()
   {
     // the bulk couples displacements only; contact adds its own couplings
     DynamicSparsityPattern dsp(locally_relevant);
-    DoFTools::make_sparsity_pattern(dof_handler,
-                                    displacement_coupling(fe->n_components(),
-                                                          dim),
-                                    dsp,
-                                    increment_constraints,
-                                    false);
-    for (const auto i : locally_owned)
-      dsp.add(i, i);
+    mechanics->make_sparsity_pattern(increment_constraints, dsp);
     if (contact)
       contact->add_sparsity(dsp);
     if (contact && newton.wants_fill_in())
@@ -556,7 +533,7 @@ namespace ContactDynamics
     // reactions at t = 0 for the trapezoidal external work
     mechanics->assemble(ghosted(u, u_ghost),
                         ghosted(v, v_ghost),
-                        ghosted(a, a_ghost),
+                        a,
                         integrator.is_dynamic() ? 1. : 0.,
                         0.,
                         increment_constraints,
@@ -611,7 +588,7 @@ namespace ContactDynamics
 
     energies = EnergyBalance();
     energies.kinetic =
-      integrator.is_dynamic() ? mechanics->kinetic_energy(v_ghost) : 0.;
+      integrator.is_dynamic() ? mechanics->kinetic_energy(v) : 0.;
     energies.elastic = mechanics->elastic_energy(u_ghost);
     energies.initial = energies.kinetic + energies.elastic;
   }
@@ -758,16 +735,13 @@ namespace ContactDynamics
     // K(v + s w) = K(v) + s b + s^2 K(w) = K(v) - work: the root of
     // smaller size, or the largest removal (s = -1 when the prescribed
     // velocities do not couple) if the step created more than w carries
-    const double k_w =
-      mechanics->kinetic_energy(ghosted(direction, scratch_ghost[0]));
+    const double k_w = mechanics->kinetic_energy(direction);
     if (!(k_w > 0))
       return 0;
     VectorType sum(v_new);
     sum += direction;
-    const double k_v =
-      mechanics->kinetic_energy(ghosted(v_new, scratch_ghost[0]));
-    const double b =
-      mechanics->kinetic_energy(ghosted(sum, scratch_ghost[0])) - k_v - k_w;
+    const double k_v          = mechanics->kinetic_energy(v_new);
+    const double b            = mechanics->kinetic_energy(sum) - k_v - k_w;
     const double discriminant = b * b - 4 * k_w * work;
     double       s            = -b / (2 * k_w);
     if (discriminant >= 0)
@@ -791,7 +765,6 @@ namespace ContactDynamics
     set_trial_velocity_and_acceleration();
     ghosted(u_new, u_ghost);
     ghosted(v_new, v_ghost);
-    ghosted(a_new, a_ghost);
     if (contact)
       {
         TimerOutput::Scope t(*timer, "contact search");
@@ -800,8 +773,8 @@ namespace ContactDynamics
       }
     TimerOutput::Scope t(*timer, "bulk assembly");
     mechanics->assemble(u_ghost,
-                        v_ghost,
-                        a_ghost,
+                        v_new,
+                        a_new,
                         integrator.acceleration_factor(dt_current),
                         integrator.velocity_factor(dt_current),
                         increment_constraints,
@@ -933,9 +906,8 @@ namespace ContactDynamics
         mean_velocity.sadd(0.5, 0.5, v_new);
         increment = u_new;
         increment -= u;
-        const VectorType &mean_ghost = ghosted(mean_velocity, scratch_ghost[0]);
         updated.dissipated +=
-          dt * mechanics->damping_product(mean_ghost, mean_ghost);
+          dt * mechanics->damping_product(mean_velocity, mean_velocity);
         double boundary_work = 0;
         for (const auto &line : increment_constraints.get_lines())
           if (locally_owned.is_element(line.index))
@@ -946,9 +918,7 @@ namespace ContactDynamics
           Utilities::MPI::sum(boundary_work, mpi_communicator) +
           increment * body_force;
         updated.kinetic =
-          integrator.is_dynamic() ?
-            mechanics->kinetic_energy(ghosted(v_new, scratch_ghost[0])) :
-            0.;
+          integrator.is_dynamic() ? mechanics->kinetic_energy(v_new) : 0.;
         updated.elastic = mechanics->elastic_energy(u_ghost);
         if (!std::isfinite(updated.error()))
           {

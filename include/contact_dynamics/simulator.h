@@ -265,7 +265,7 @@ namespace ContactDynamics
       body_force;
     // ghosted: the trial state of the last assembly (committed to the
     // contact when the step converges), and scratch copies
-    VectorType    u_ghost, v_ghost, a_ghost, scratch_ghost[2];
+    VectorType    u_ghost, v_ghost, scratch_ghost[2];
     std::ofstream null_stream; // never opened: discards what it gets
 
     double        time                         = 0;

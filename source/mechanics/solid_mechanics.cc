@@ -1,59 +1,228 @@
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/work_stream.h>
+
+#include <deal.II/dofs/dof_tools.h>
 
 #include <deal.II/fe/fe_values.h>
 
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
 #include <contact_dynamics/mechanics/solid_mechanics.h>
 #include <contact_dynamics/parallel.h>
+
+#include <algorithm>
+#include <exception>
 
 namespace ContactDynamics
 {
   namespace
   {
-    // Evaluates the displacement-field quantities of one cell at all
-    // quadrature points.
+    /**
+     * The displacement's shape functions on one cell. They are those of the
+     * scalar base element times unit vectors: displacement dof i of the
+     * system element is e_{component[i]} phi_{node[i]}, so that its gradient
+     * is e_{component[i]} (x) grad phi_{node[i]}. Working with the scalar
+     * functions avoids FEValuesViews and products with zero entries. Their
+     * gradients come from FEValues or from a cache (the mesh does not move:
+     * total Lagrangian).
+     */
     template <int dim>
-    struct CellFields
+    struct ScratchData
     {
-      CellFields(const DoFHandler<dim> &dof_handler)
-        : quadrature(dof_handler.get_fe().degree + 1)
-        , fe_values(dof_handler.get_fe(),
+      explicit ScratchData(const FiniteElement<dim> &fe)
+        : fe(fe)
+        , quadrature(fe.degree + 1)
+        , fe_values(fe.base_element(fe.component_to_base_index(0).first),
                     quadrature,
                     update_values | update_gradients | update_JxW_values)
-        , displacement(0)
-        , dofs(dof_handler.get_fe().n_dofs_per_cell())
-        , grad_u(quadrature.size())
-        , grad_v(quadrature.size())
-        , v(quadrature.size())
-        , a(quadrature.size())
       {
-        // only the displacement components carry mass and stiffness
-        const auto &fe = dof_handler.get_fe();
+        const unsigned int base = fe.component_to_base_index(0).first;
         for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-          if (fe.system_to_component_index(i).first < dim)
-            u_local.push_back(i);
+          {
+            const auto [c, index] = fe.system_to_component_index(i);
+            if (c < dim)
+              {
+                AssertThrow(fe.component_to_base_index(c).first == base &&
+                              fe.base_element(base).n_components() == 1,
+                            ExcMessage("The displacement components must "
+                                       "share one scalar base element."));
+                u_dofs.push_back(i);
+                component.push_back(c);
+                node.push_back(index);
+              }
+          }
+        u_local.resize(u_dofs.size());
+        n_nodes = fe.base_element(base).n_dofs_per_cell();
+        cell_gradients.resize(quadrature.size() * n_nodes);
+        cell_JxW.resize(quadrature.size());
       }
 
+      // WorkStream copies the sample for each thread
+      ScratchData(const ScratchData &other)
+        : ScratchData(other.fe)
+      {}
+
+      // the system element's dofs are not those of fe_values
       void
       reinit(const typename DoFHandler<dim>::active_cell_iterator &cell)
       {
-        fe_values.reinit(cell);
-        cell->get_dof_indices(dofs);
+        fe_values.reinit(typename Triangulation<dim>::cell_iterator(cell));
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          {
+            cell_JxW[q] = fe_values.JxW(q);
+            for (unsigned int a = 0; a < n_nodes; ++a)
+              cell_gradients[q * n_nodes + a] = fe_values.shape_grad(a, q);
+          }
+        reinit(cell_gradients.data(), cell_JxW.data());
       }
 
-      QGauss<dim>                          quadrature;
-      FEValues<dim>                        fe_values;
-      const FEValuesExtractors::Vector     displacement;
-      std::vector<types::global_dof_index> dofs;
-      std::vector<unsigned int>            u_local;
-      std::vector<Tensor<2, dim>>          grad_u, grad_v;
-      std::vector<Tensor<1, dim>>          v, a;
+      // gradients[q * n_nodes + a]: of scalar shape function a at point q
+      void
+      reinit(const Tensor<1, dim> *gradients, const double *JxW_values)
+      {
+        this->gradients  = gradients;
+        this->JxW_values = JxW_values;
+      }
+
+      const Tensor<1, dim> &
+      grad(const unsigned int k, const unsigned int q) const
+      {
+        return gradients[q * n_nodes + node[k]];
+      }
+
+      double
+      JxW(const unsigned int q) const
+      {
+        return JxW_values[q];
+      }
+
+      const FiniteElement<dim> &fe;
+      const QGauss<dim>         quadrature;
+      FEValues<dim>             fe_values;
+      // per displacement dof k: its index in the system element, its
+      // component, its scalar shape function
+      std::vector<unsigned int>   u_dofs, component, node;
+      std::vector<double>         u_local; // the displacement dofs' values
+      unsigned int                n_nodes;
+      std::vector<Tensor<1, dim>> cell_gradients;
+      std::vector<double>         cell_JxW;
+      const Tensor<1, dim>       *gradients  = nullptr;
+      const double               *JxW_values = nullptr;
     };
 
     template <int dim>
-    Tensor<2, dim>
-    symmetrize(const Tensor<2, dim> &t)
+    struct CopyData
     {
-      return 0.5 * (t + transpose(t));
+      explicit CopyData(const unsigned int n)
+        : matrix(n, n)
+        , rhs(n)
+        , zero(n)
+        , dofs(n)
+      {}
+
+      FullMatrix<double>                   matrix;
+      Vector<double>                       rhs, zero;
+      std::vector<types::global_dof_index> dofs;
+      double                               energy = 0;
+      // WorkStream aborts on exceptions that escape a worker: the first one
+      // in the order of the cells is rethrown after the loop
+      std::exception_ptr failure;
+    };
+
+    // matrix(i, j) += factor * A[c_i][k][c_j][l] g_i[k] g_j[l] for the
+    // displacement dofs i <= j at point q. A has major symmetry (the
+    // second derivative of a stored energy): the caller mirrors the upper
+    // triangle.
+    template <int dim>
+    void
+    add_stiffness(const Tensor<4, dim>   &A,
+                  const double            factor,
+                  const unsigned int      q,
+                  const ScratchData<dim> &s,
+                  FullMatrix<double>     &matrix)
+    {
+      const unsigned int n = s.u_dofs.size();
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const Tensor<1, dim> &g = s.grad(i, q);
+          Tensor<2, dim>        h; // h[d][l] = factor g[k] A[c_i][k][d][l]
+          for (unsigned int k = 0; k < dim; ++k)
+            h += (factor * g[k]) * A[s.component[i]][k];
+          for (unsigned int j = i; j < n; ++j)
+            matrix(s.u_dofs[i], s.u_dofs[j]) +=
+              h[s.component[j]] * s.grad(j, q);
+        }
+    }
+
+    // matrix(i, j) += factor phi_i phi_j for the displacement dofs i <= j of
+    // the same component
+    template <int dim>
+    void
+    add_mass(const double            factor,
+             const unsigned int      q,
+             const ScratchData<dim> &s,
+             FullMatrix<double>     &matrix)
+    {
+      const unsigned int n = s.u_dofs.size();
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const double phi = factor * s.fe_values.shape_value(s.node[i], q);
+          for (unsigned int j = i; j < n; ++j)
+            if (s.component[j] == s.component[i])
+              matrix(s.u_dofs[i], s.u_dofs[j]) +=
+                phi * s.fe_values.shape_value(s.node[j], q);
+        }
+    }
+
+    template <int dim>
+    void
+    mirror_upper_triangle(const ScratchData<dim> &s, FullMatrix<double> &matrix)
+    {
+      for (unsigned int i = 0; i < s.u_dofs.size(); ++i)
+        for (unsigned int j = i + 1; j < s.u_dofs.size(); ++j)
+          matrix(s.u_dofs[j], s.u_dofs[i]) = matrix(s.u_dofs[i], s.u_dofs[j]);
+    }
+
+    // WorkStream over `cells` (worker(position in cells, ...)): exceptions
+    // of `worker` reach the caller
+    template <typename Iterator, typename Worker, typename Copier, int dim>
+    void
+    run_on_cells(const std::vector<Iterator> &cells,
+                 const Worker                &worker,
+                 const Copier                &copier,
+                 const FiniteElement<dim>    &fe)
+    {
+      std::exception_ptr first_failure;
+      using It = typename std::vector<Iterator>::const_iterator;
+      WorkStream::run(
+        cells.begin(),
+        cells.end(),
+        [&](const It &cell, ScratchData<dim> &scratch, CopyData<dim> &copy) {
+          copy.failure = nullptr;
+          try
+            {
+              (*cell)->get_dof_indices(copy.dofs);
+              worker(cell, scratch, copy);
+            }
+          catch (...)
+            {
+              copy.failure = std::current_exception();
+            }
+        },
+        [&](const CopyData<dim> &copy) {
+          if (copy.failure)
+            {
+              if (!first_failure)
+                first_failure = copy.failure;
+            }
+          else if (!first_failure)
+            copier(copy);
+        },
+        ScratchData<dim>(fe),
+        CopyData<dim>(fe.n_dofs_per_cell()));
+      if (first_failure)
+        std::rethrow_exception(first_failure);
     }
   } // namespace
 
@@ -66,7 +235,10 @@ namespace ContactDynamics
     , bodies(bodies)
   {
     for (const auto &b : bodies)
-      materials.push_back(create_material<dim>(b.material));
+      {
+        materials.push_back(create_material<dim>(b.material));
+        has_linear_cells = has_linear_cells || materials.back()->is_linear();
+      }
   }
 
   template <int dim>
@@ -77,6 +249,249 @@ namespace ContactDynamics
       if (!m->is_linear())
         return false;
     return true;
+  }
+
+  template <int dim>
+  void
+  SolidMechanics<dim>::make_sparsity_pattern(
+    const AffineConstraints<double> &constraints,
+    DynamicSparsityPattern          &dsp) const
+  {
+    const unsigned int n_components = dof_handler.get_fe().n_components();
+    Table<2, DoFTools::Coupling> coupling(n_components, n_components);
+    for (unsigned int c = 0; c < n_components; ++c)
+      for (unsigned int d = 0; d < n_components; ++d)
+        coupling(c, d) =
+          (c < dim && d < dim) ? DoFTools::always : DoFTools::none;
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    coupling,
+                                    dsp,
+                                    constraints,
+                                    false);
+    for (const auto i : dof_handler.locally_owned_dofs())
+      dsp.add(i, i);
+  }
+
+  template <int dim>
+  void
+  SolidMechanics<dim>::setup(const AffineConstraints<double> &constraints)
+  {
+    jacobian_constraints = &constraints;
+    owned_cells.clear();
+    nonlinear_cells.clear();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          owned_cells.push_back(cell);
+          if (!materials[cell->material_id()]->is_linear())
+            nonlinear_cells.push_back(cell);
+        }
+
+    const MPI_Comm  comm          = dof_handler.get_communicator();
+    const IndexSet &locally_owned = dof_handler.locally_owned_dofs();
+    IndexSet        locally_relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant);
+    const auto pattern = [&](const AffineConstraints<double> &c) {
+      DynamicSparsityPattern dsp(locally_relevant);
+      make_sparsity_pattern(c, dsp);
+      SparsityTools::distribute_sparsity_pattern(dsp,
+                                                 locally_owned,
+                                                 comm,
+                                                 locally_relevant);
+      return dsp;
+    };
+
+    AffineConstraints<double> none;
+    none.close();
+    const DynamicSparsityPattern full = pattern(none);
+    mass.reinit(locally_owned, locally_owned, full, comm);
+    damping.reinit(mass);
+    assemble_constant_matrix(1, 0, 0, none, mass);
+    assemble_constant_matrix(0, 1, 0, none, damping);
+    if (has_linear_cells)
+      {
+        linear_stiffness.reinit(mass);
+        assemble_constant_matrix(0, 0, 1, none, linear_stiffness);
+      }
+    constant_jacobian.reinit(locally_owned,
+                             locally_owned,
+                             pattern(constraints),
+                             comm);
+    constant_jacobian_c_a = constant_jacobian_c_v = -1;
+
+    body_force_vector.reinit(locally_owned, comm);
+    for (VectorType &v : scratch)
+      v.reinit(locally_owned, comm);
+    ScratchData<dim> s(dof_handler.get_fe());
+    CopyData<dim>    copy(dof_handler.get_fe().n_dofs_per_cell());
+    for (const auto &cell : owned_cells)
+      {
+        s.reinit(cell);
+        cell->get_dof_indices(copy.dofs);
+        const auto &b = bodies[cell->material_id()].body_force;
+        copy.rhs      = 0;
+        for (unsigned int q = 0; q < s.quadrature.size(); ++q)
+          for (unsigned int k = 0; k < s.u_dofs.size(); ++k)
+            copy.rhs(s.u_dofs[k]) += b[s.component[k]] *
+                                     s.fe_values.shape_value(s.node[k], q) *
+                                     s.JxW(q);
+        body_force_vector.add(copy.dofs, copy.rhs);
+      }
+    body_force_vector.compress(VectorOperation::add);
+
+    // the nonlinear cells' shape gradients, for every Newton iteration
+    const unsigned int n_q = s.quadrature.size(), n_nodes = s.n_nodes;
+    nonlinear_gradients.resize(nonlinear_cells.size() * n_q * n_nodes);
+    nonlinear_JxW.resize(nonlinear_cells.size() * n_q);
+    for (std::size_t c = 0; c < nonlinear_cells.size(); ++c)
+      {
+        s.reinit(nonlinear_cells[c]);
+        std::copy(s.cell_gradients.begin(),
+                  s.cell_gradients.end(),
+                  nonlinear_gradients.begin() + c * n_q * n_nodes);
+        std::copy(s.cell_JxW.begin(),
+                  s.cell_JxW.end(),
+                  nonlinear_JxW.begin() + c * n_q);
+      }
+  }
+
+  template <int dim>
+  void
+  SolidMechanics<dim>::assemble_constant_matrix(
+    const double                     factor_m,
+    const double                     factor_c,
+    const double                     factor_k,
+    const AffineConstraints<double> &constraints,
+    MatrixType                      &matrix,
+    VectorType                      *rhs) const
+  {
+    // a linear material's tangent is its constant elasticity tensor
+    std::vector<Tensor<4, dim>> linear_tangent(materials.size());
+    for (unsigned int b = 0; b < materials.size(); ++b)
+      if (materials[b]->is_linear())
+        {
+          Tensor<2, dim> stress;
+          double         W;
+          materials[b]->evaluate(Tensor<2, dim>(),
+                                 stress,
+                                 linear_tangent[b],
+                                 W);
+        }
+
+    matrix = 0;
+    if (rhs)
+      *rhs = 0;
+    const auto worker =
+      [&](const auto &it, ScratchData<dim> &s, CopyData<dim> &copy) {
+        const CellIterator &cell = *it;
+        s.reinit(cell);
+        const types::material_id  id = cell->material_id();
+        const MaterialParameters &p  = bodies[id].material;
+        const double              m =
+          p.density * (factor_m + factor_c * p.rayleigh_mass_coefficient);
+        const double c = factor_c * p.rayleigh_stiffness_coefficient;
+        const double k = materials[id]->is_linear() ? factor_k : 0.;
+        copy.matrix    = 0;
+        for (unsigned int q = 0; q < s.quadrature.size(); ++q)
+          {
+            const double JxW = s.JxW(q);
+            if (m != 0)
+              add_mass(m * JxW, q, s, copy.matrix);
+            if (c != 0)
+              add_stiffness(materials[id]->reference_elasticity(),
+                            c * JxW,
+                            q,
+                            s,
+                            copy.matrix);
+            if (k != 0)
+              add_stiffness(linear_tangent[id], k * JxW, q, s, copy.matrix);
+          }
+        mirror_upper_triangle(s, copy.matrix);
+      };
+    const auto copier = [&](const CopyData<dim> &copy) {
+      if (rhs)
+        constraints.distribute_local_to_global(copy.matrix,
+                                               copy.zero,
+                                               copy.dofs,
+                                               matrix,
+                                               *rhs,
+                                               true);
+      else
+        constraints.distribute_local_to_global(copy.matrix, copy.dofs, matrix);
+    };
+    run_on_cells(owned_cells, worker, copier, dof_handler.get_fe());
+    matrix.compress(VectorOperation::add);
+    if (rhs)
+      rhs->compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  double
+  SolidMechanics<dim>::assemble_nonlinear(
+    const VectorType                &u,
+    const AffineConstraints<double> &constraints,
+    VectorType                      *force,
+    MatrixType                      *tangent) const
+  {
+    double             energy = 0;
+    const unsigned int n_q =
+      nonlinear_JxW.size() / std::max<std::size_t>(nonlinear_cells.size(), 1);
+    const auto worker = [&](const auto       &it,
+                            ScratchData<dim> &s,
+                            CopyData<dim>    &copy) {
+      const CellIterator &cell = *it;
+      const std::size_t   c    = it - nonlinear_cells.begin();
+      s.reinit(&nonlinear_gradients[c * n_q * s.n_nodes],
+               &nonlinear_JxW[c * n_q]);
+      const Material<dim> &material = *materials[cell->material_id()];
+      const unsigned int   n        = s.u_dofs.size();
+      copy.energy                   = 0;
+      copy.rhs                      = 0;
+      if (tangent)
+        copy.matrix = 0;
+      for (unsigned int k = 0; k < n; ++k)
+        s.u_local[k] = u(copy.dofs[s.u_dofs[k]]);
+      Tensor<2, dim> P;
+      Tensor<4, dim> A;
+      double         W;
+      for (unsigned int q = 0; q < s.quadrature.size(); ++q)
+        {
+          Tensor<2, dim> grad_u;
+          for (unsigned int k = 0; k < n; ++k)
+            grad_u[s.component[k]] += s.u_local[k] * s.grad(k, q);
+          material.evaluate(grad_u, P, A, W);
+          const double JxW = s.JxW(q);
+          copy.energy += W * JxW;
+          if (force)
+            for (unsigned int k = 0; k < n; ++k)
+              copy.rhs(s.u_dofs[k]) += (P[s.component[k]] * s.grad(k, q)) * JxW;
+          if (tangent)
+            add_stiffness(A, JxW, q, s, copy.matrix);
+        }
+      if (tangent)
+        mirror_upper_triangle(s, copy.matrix);
+    };
+    const auto copier = [&](const CopyData<dim> &copy) {
+      energy += copy.energy;
+      if (force)
+        force->add(copy.dofs, copy.rhs);
+      if (tangent)
+        constraints.distribute_local_to_global(copy.matrix,
+                                               copy.dofs,
+                                               *tangent);
+    };
+    run_on_cells(nonlinear_cells, worker, copier, dof_handler.get_fe());
+    return energy;
+  }
+
+  template <int dim>
+  const VectorType &
+  SolidMechanics<dim>::owned(const VectorType &x, VectorType &copy) const
+  {
+    if (!x.has_ghost_elements())
+      return x;
+    copy = x;
+    return copy;
   }
 
   template <int dim>
@@ -92,106 +507,57 @@ namespace ContactDynamics
                                 MatrixType                      &jacobian,
                                 VectorType &residual_full) const
   {
-    residual      = 0;
-    residual_full = 0;
+    // quasi-statics (c_a = 0) has neither inertia nor damping
+    const bool dynamic = (c_a > 0);
+    residual_full      = 0;
     if (with_jacobian)
-      jacobian = 0;
-
-    CellFields<dim>             f(dof_handler);
-    const bool                  dynamic = (c_a > 0);
-    const unsigned int          n       = f.dofs.size();
-    FullMatrix<double>          cell_matrix(n, n);
-    Vector<double>              cell_rhs(n);
-    std::vector<Tensor<2, dim>> grad_phi(n);
-    std::vector<Tensor<1, dim>> phi(n);
-    std::vector<Tensor<2, dim>> tangent_grad_phi(n);
+      {
+        Assert(&constraints == jacobian_constraints,
+               ExcMessage("The Jacobian's constraints are those of setup()."));
+        const double m = dynamic ? c_a : 0., c = dynamic ? c_v : 0.;
+        if (m != constant_jacobian_c_a || c != constant_jacobian_c_v)
+          {
+            assemble_constant_matrix(m, c, 1, constraints, constant_jacobian);
+            constant_jacobian_c_a = m;
+            constant_jacobian_c_v = c;
+          }
+        jacobian = 0;
+        jacobian.add(1., constant_jacobian);
+      }
 
     // an inverted element throws on its process only
-    const auto local = [&]() {
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            f.reinit(cell);
-            const Material<dim>  &material = *materials[cell->material_id()];
-            const BodyParameters &body     = bodies[cell->material_id()];
-            const double          rho      = body.material.density;
-            const double   alpha = body.material.rayleigh_mass_coefficient;
-            const double   beta  = body.material.rayleigh_stiffness_coefficient;
-            Tensor<1, dim> body_force;
-            for (unsigned int d = 0; d < dim; ++d)
-              body_force[d] = body.body_force[d];
+    run_collectively(
+      residual.get_mpi_communicator(),
+      [&]() {
+        assemble_nonlinear(u,
+                           constraints,
+                           &residual_full,
+                           with_jacobian ? &jacobian : nullptr);
+      },
+      [&]() {
+        residual_full.compress(VectorOperation::add);
+        if (with_jacobian)
+          jacobian.compress(VectorOperation::add);
+      });
 
-            f.fe_values[f.displacement].get_function_gradients(u, f.grad_u);
-            if (dynamic)
-              {
-                f.fe_values[f.displacement].get_function_values(v, f.v);
-                f.fe_values[f.displacement].get_function_values(a, f.a);
-                f.fe_values[f.displacement].get_function_gradients(v, f.grad_v);
-              }
-            cell_matrix = 0;
-            cell_rhs    = 0;
-
-            for (unsigned int q = 0; q < f.quadrature.size(); ++q)
-              {
-                Tensor<2, dim> stress;
-                Tensor<4, dim> tangent;
-                double         W;
-                material.evaluate(f.grad_u[q], stress, tangent, W);
-                Tensor<1, dim> inertia = -body_force;
-                if (dynamic)
-                  {
-                    inertia += rho * (f.a[q] + alpha * f.v[q]);
-                    if (beta > 0)
-                      stress += beta * double_contract<2, 0, 3, 1>(
-                                         material.reference_elasticity(),
-                                         symmetrize(f.grad_v[q]));
-                  }
-                const double JxW = f.fe_values.JxW(q);
-                for (const unsigned int i : f.u_local)
-                  {
-                    phi[i]      = f.fe_values[f.displacement].value(i, q);
-                    grad_phi[i] = f.fe_values[f.displacement].gradient(i, q);
-                    cell_rhs(i) +=
-                      (inertia * phi[i] + scalar_product(stress, grad_phi[i])) *
-                      JxW;
-                  }
-                if (!with_jacobian)
-                  continue;
-
-                if (dynamic && beta > 0)
-                  tangent += (c_v * beta) * material.reference_elasticity();
-                const double mass_factor =
-                  dynamic ? rho * (c_a + alpha * c_v) : 0.;
-                for (const unsigned int j : f.u_local)
-                  tangent_grad_phi[j] =
-                    double_contract<2, 0, 3, 1>(tangent, grad_phi[j]);
-                for (const unsigned int i : f.u_local)
-                  for (const unsigned int j : f.u_local)
-                    cell_matrix(i, j) +=
-                      (scalar_product(grad_phi[i], tangent_grad_phi[j]) +
-                       mass_factor * (phi[i] * phi[j])) *
-                      JxW;
-              }
-
-            residual_full.add(f.dofs, cell_rhs);
-            if (with_jacobian)
-              constraints.distribute_local_to_global(cell_matrix,
-                                                     cell_rhs,
-                                                     f.dofs,
-                                                     jacobian,
-                                                     residual);
-            else
-              constraints.distribute_local_to_global(cell_rhs,
-                                                     f.dofs,
-                                                     residual);
-          }
-    };
-    run_collectively(residual.get_mpi_communicator(), local, [&]() {
-      residual.compress(VectorOperation::add);
-      residual_full.compress(VectorOperation::add);
-      if (with_jacobian)
-        jacobian.compress(VectorOperation::add);
-    });
+    // the state-independent part: matrix-vector products
+    residual_full -= body_force_vector;
+    VectorType &product = scratch[2];
+    if (dynamic)
+      {
+        mass.vmult(product, owned(a, scratch[0]));
+        residual_full += product;
+        damping.vmult(product, owned(v, scratch[0]));
+        residual_full += product;
+      }
+    if (has_linear_cells)
+      {
+        linear_stiffness.vmult(product, owned(u, scratch[0]));
+        residual_full += product;
+      }
+    // homogeneous constraints without entries: the rows are dropped
+    residual = residual_full;
+    constraints.set_zero(residual);
   }
 
   template <int dim>
@@ -204,51 +570,23 @@ namespace ContactDynamics
     VectorType                      &rhs) const
   {
     // -(C v0 + f_int(u0) - f_body): the residual with zero acceleration
-    VectorType zero_a(v), residual, residual_full;
+    VectorType zero_a(body_force_vector), residual(body_force_vector),
+      residual_full(body_force_vector);
     zero_a = 0;
-    residual.reinit(rhs.locally_owned_elements(), rhs.get_mpi_communicator());
-    residual_full.reinit(residual);
+    AffineConstraints<double> none;
+    none.close();
     assemble(u,
              v,
              zero_a,
              1.,
              0.,
-             AffineConstraints<double>(),
+             none,
              false,
              residual,
              mass_matrix,
              residual_full);
 
-    mass_matrix = 0;
-    rhs         = 0;
-    CellFields<dim>    f(dof_handler);
-    const unsigned int n = f.dofs.size();
-    FullMatrix<double> cell_matrix(n, n);
-    Vector<double>     cell_rhs(n);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          f.reinit(cell);
-          const double rho = bodies[cell->material_id()].material.density;
-          cell_matrix      = 0;
-          for (unsigned int q = 0; q < f.quadrature.size(); ++q)
-            for (const unsigned int i : f.u_local)
-              for (const unsigned int j : f.u_local)
-                cell_matrix(i, j) += rho *
-                                     (f.fe_values[f.displacement].value(i, q) *
-                                      f.fe_values[f.displacement].value(j, q)) *
-                                     f.fe_values.JxW(q);
-          for (unsigned int i = 0; i < n; ++i)
-            cell_rhs(i) = 0;
-          constraints.distribute_local_to_global(cell_matrix,
-                                                 cell_rhs,
-                                                 f.dofs,
-                                                 mass_matrix,
-                                                 rhs,
-                                                 true);
-        }
-    mass_matrix.compress(VectorOperation::add);
-    rhs.compress(VectorOperation::add);
+    assemble_constant_matrix(1, 0, 0, constraints, mass_matrix, &rhs);
     // rhs -= residual at free dofs (constrained rows carry the prescribed
     // accelerations from distribute_local_to_global)
     for (const auto i : rhs.locally_owned_elements())
@@ -258,71 +596,23 @@ namespace ContactDynamics
   }
 
   template <int dim>
-  void
-  SolidMechanics<dim>::assemble_body_force(VectorType &force) const
-  {
-    force = 0;
-    CellFields<dim>    f(dof_handler);
-    const unsigned int n = f.dofs.size();
-    Vector<double>     cell_rhs(n);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          f.reinit(cell);
-          const BodyParameters &body = bodies[cell->material_id()];
-          Tensor<1, dim>        b;
-          for (unsigned int d = 0; d < dim; ++d)
-            b[d] = body.body_force[d];
-          cell_rhs = 0;
-          for (unsigned int q = 0; q < f.quadrature.size(); ++q)
-            for (const unsigned int i : f.u_local)
-              cell_rhs(i) += b * f.fe_values[f.displacement].value(i, q) *
-                             f.fe_values.JxW(q);
-          force.add(f.dofs, cell_rhs);
-        }
-    force.compress(VectorOperation::add);
-  }
-
-  template <int dim>
   double
   SolidMechanics<dim>::kinetic_energy(const VectorType &v) const
   {
-    CellFields<dim> f(dof_handler);
-    double          energy = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          f.reinit(cell);
-          f.fe_values[f.displacement].get_function_values(v, f.v);
-          const double rho = bodies[cell->material_id()].material.density;
-          for (unsigned int q = 0; q < f.quadrature.size(); ++q)
-            energy += 0.5 * rho * (f.v[q] * f.v[q]) * f.fe_values.JxW(q);
-        }
-    return Utilities::MPI::sum(energy, v.get_mpi_communicator());
+    return 0.5 * mass.matrix_norm_square(owned(v, scratch[0]));
   }
 
   template <int dim>
   double
   SolidMechanics<dim>::elastic_energy(const VectorType &u) const
   {
-    CellFields<dim> f(dof_handler);
-    double          energy = 0;
-    Tensor<2, dim>  stress;
-    Tensor<4, dim>  tangent;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          f.reinit(cell);
-          f.fe_values[f.displacement].get_function_gradients(u, f.grad_u);
-          const Material<dim> &material = *materials[cell->material_id()];
-          for (unsigned int q = 0; q < f.quadrature.size(); ++q)
-            {
-              double W;
-              material.evaluate(f.grad_u[q], stress, tangent, W);
-              energy += W * f.fe_values.JxW(q);
-            }
-        }
-    return Utilities::MPI::sum(energy, u.get_mpi_communicator());
+    AffineConstraints<double> none;
+    double                    energy =
+      Utilities::MPI::sum(assemble_nonlinear(u, none, nullptr, nullptr),
+                          u.get_mpi_communicator());
+    if (has_linear_cells)
+      energy += 0.5 * linear_stiffness.matrix_norm_square(owned(u, scratch[0]));
+    return energy;
   }
 
   template <int dim>
@@ -330,35 +620,8 @@ namespace ContactDynamics
   SolidMechanics<dim>::damping_product(const VectorType &v1,
                                        const VectorType &v2) const
   {
-    CellFields<dim>             f(dof_handler);
-    std::vector<Tensor<1, dim>> w(f.quadrature.size());
-    std::vector<Tensor<2, dim>> grad_w(f.quadrature.size());
-    double                      product = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const auto  &m     = bodies[cell->material_id()].material;
-          const double alpha = m.rayleigh_mass_coefficient;
-          const double beta  = m.rayleigh_stiffness_coefficient;
-          if (alpha == 0 && beta == 0)
-            continue;
-          f.reinit(cell);
-          f.fe_values[f.displacement].get_function_values(v1, f.v);
-          f.fe_values[f.displacement].get_function_gradients(v1, f.grad_v);
-          f.fe_values[f.displacement].get_function_values(v2, w);
-          f.fe_values[f.displacement].get_function_gradients(v2, grad_w);
-          const Tensor<4, dim> &C =
-            materials[cell->material_id()]->reference_elasticity();
-          for (unsigned int q = 0; q < f.quadrature.size(); ++q)
-            product +=
-              (alpha * m.density * (f.v[q] * w[q]) +
-               beta *
-                 scalar_product(
-                   symmetrize(f.grad_v[q]),
-                   double_contract<2, 0, 3, 1>(C, symmetrize(grad_w[q])))) *
-              f.fe_values.JxW(q);
-        }
-    return Utilities::MPI::sum(product, v1.get_mpi_communicator());
+    return damping.matrix_scalar_product(owned(v1, scratch[0]),
+                                         owned(v2, scratch[1]));
   }
 
   template class SolidMechanics<2>;

@@ -15,6 +15,10 @@
 #include <memory>
 #include <vector>
 
+DEAL_II_NAMESPACE_OPEN
+class DynamicSparsityPattern;
+DEAL_II_NAMESPACE_CLOSE
+
 namespace ContactDynamics
 {
   using namespace dealii;
@@ -27,6 +31,11 @@ namespace ContactDynamics
    * (d a/d u = c_a, d v/d u = c_v). The displacement is the first dim
    * components of the finite element; further components (contact
    * multipliers) are left to others.
+   *
+   * M, C and the stiffness K of the linear elastic bodies do not depend on
+   * the state: setup() assembles them once, and the residual takes their
+   * part from matrix-vector products. Only the cells of nonlinear bodies
+   * are visited per Newton iteration (on all cores, WorkStream).
    */
   template <int dim>
   class SolidMechanics
@@ -34,6 +43,22 @@ namespace ContactDynamics
   public:
     SolidMechanics(const DoFHandler<dim>             &dof_handler,
                    const std::vector<BodyParameters> &bodies);
+
+    /**
+     * After the degrees of freedom are distributed: the state-independent
+     * matrices and the body force. `constraints` are those every Jacobian
+     * of assemble() is built with (homogeneous).
+     */
+    void
+    setup(const AffineConstraints<double> &constraints);
+
+    /**
+     * The couplings of the bulk (displacements with each other) into
+     * `dsp`, without the entries that `constraints` eliminate.
+     */
+    void
+    make_sparsity_pattern(const AffineConstraints<double> &constraints,
+                          DynamicSparsityPattern          &dsp) const;
 
     /** All bodies are linear elastic: the Jacobian is constant. */
     bool
@@ -43,7 +68,9 @@ namespace ContactDynamics
      * Residual at (u, v, a). With constraints (homogeneous for Newton
      * increments) into `residual` and, if asked, `jacobian`; without them
      * into `residual_full`, whose entries at Dirichlet degrees of freedom are
-     * the reaction forces.
+     * the reaction forces. The Jacobian's constraints are those of setup().
+     * Vectors may be ghosted or not; u must be ghosted if a body is
+     * nonlinear.
      */
     void
     assemble(const VectorType                &u,
@@ -71,8 +98,11 @@ namespace ContactDynamics
       VectorType                      &rhs) const;
 
     /** The body force vector (constant in time). */
-    void
-    assemble_body_force(VectorType &f) const;
+    const VectorType &
+    body_force() const
+    {
+      return body_force_vector;
+    }
 
     /** 1/2 v.M v */
     double
@@ -93,9 +123,54 @@ namespace ContactDynamics
     }
 
   private:
+    using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
+
+    /**
+     * factor_m M + factor_c C + factor_k K (K: the linear elastic bodies)
+     * into `matrix`, cell by cell through `constraints`; with `rhs`, the
+     * inhomogeneities of the constraints go there.
+     */
+    void
+    assemble_constant_matrix(const double                     factor_m,
+                             const double                     factor_c,
+                             const double                     factor_k,
+                             const AffineConstraints<double> &constraints,
+                             MatrixType                      &matrix,
+                             VectorType *rhs = nullptr) const;
+
+    /**
+     * The nonlinear bodies' internal forces into `force` and, if given,
+     * their tangent into `tangent`; returns their stored energy.
+     */
+    double
+    assemble_nonlinear(const VectorType                &u,
+                       const AffineConstraints<double> &constraints,
+                       VectorType                      *force,
+                       MatrixType                      *tangent) const;
+
+    /** x itself, or a copy without ghosts for matrix-vector products. */
+    const VectorType &
+    owned(const VectorType &x, VectorType &scratch) const;
+
     const DoFHandler<dim>                      &dof_handler;
     const std::vector<BodyParameters>          &bodies;
     std::vector<std::unique_ptr<Material<dim>>> materials;
+
+    const AffineConstraints<double> *jacobian_constraints = nullptr;
+    std::vector<CellIterator>        owned_cells, nonlinear_cells;
+    // their shape gradients and JxW at the quadrature points, cell by cell
+    std::vector<Tensor<1, dim>> nonlinear_gradients;
+    std::vector<double>         nonlinear_JxW;
+    VectorType                  body_force_vector;
+    // unconstrained, for residuals and energies: mass, damping, stiffness
+    // of the linear elastic bodies
+    MatrixType mass, damping, linear_stiffness;
+    bool       has_linear_cells = false;
+    // c_a M + c_v C + K through the constraints of the Jacobian, for the
+    // last (c_a, c_v): the time step changes rarely
+    mutable MatrixType constant_jacobian;
+    mutable double     constant_jacobian_c_a = -1, constant_jacobian_c_v = -1;
+    mutable VectorType scratch[3];
   };
 } // namespace ContactDynamics
 
