@@ -25,7 +25,8 @@ namespace ContactDynamics
     // measured crossover (doc/solvers.md): in dynamics AMG is as fast as
     // KLU at about 40k unknowns and 1.3 times faster at 133k; in
     // quasi-static contact KLU stays faster up to 222k
-    constexpr unsigned long amg_threshold = 80000;
+    constexpr unsigned long amg_threshold     = 80000;
+    constexpr unsigned long umfpack_threshold = 20000;
   } // namespace
 
   LinearSolver::LinearSolver() = default;
@@ -58,9 +59,9 @@ namespace ContactDynamics
       "implied); the hierarchy is reused while GMRES needs at most twice "
       "the iterations it needed after its build. See doc/parallel.md and "
       "doc/solvers.md for what each costs. auto: AMG for dynamic problems "
-      "of at least 80,000 unknowns; below, UMFPACK on one process and KLU "
-      "on several (the crossovers measured on the 2-D scenes; the run's "
-      "log says which).");
+      "of at least 80,000 unknowns; below, UMFPACK on one process from "
+      "20,000 unknowns, KLU otherwise (the crossovers measured on the 2-D "
+      "scenes, doc/solvers.md; the run's log says which).");
     prm.declare_entry("Linear tolerance",
                       default_text(defaults.tolerance),
                       Patterns::Double(1e-300, 1),
@@ -102,8 +103,10 @@ namespace ContactDynamics
         release();
         if (dynamic && n_unknowns >= amg_threshold)
           type = Type::amg;
+        else if (n_processes == 1 && n_unknowns >= umfpack_threshold)
+          type = Type::umfpack;
         else
-          type = n_processes == 1 ? Type::umfpack : Type::klu;
+          type = Type::klu;
       }
     return solver_names.name(type);
   }

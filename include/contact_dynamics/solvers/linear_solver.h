@@ -51,8 +51,9 @@ namespace ContactDynamics
 
     /**
      * `Linear solver = auto`: AMG for dynamic problems of at least
-     * `amg_threshold` unknowns, otherwise UMFPACK on one process and KLU on
-     * several (doc/solvers.md has the measured crossovers). Returns the
+     * `amg_threshold` unknowns, otherwise UMFPACK on one process from
+     * `umfpack_threshold` unknowns and KLU below or on several processes
+     * (doc/solvers.md has the measured crossovers). Returns the
      * name of the solver used. Throws if UMFPACK is asked for on several
      * processes.
      */
