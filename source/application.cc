@@ -309,9 +309,24 @@ namespace ContactDynamics
     // 7.7 s instead of 5.0 s (TBB's idle workers take the core from the
     // solver) and the ironing no faster (the bulk assembly's scatter into
     // the Epetra matrix is serial); doc/parallel.md.
-    const char        *threads = std::getenv("DEAL_II_THREADS_PER_PROCESS");
-    const unsigned int n_threads =
-      threads != nullptr && std::atoi(threads) > 0 ? std::atoi(threads) : 1;
+    const char  *threads   = std::getenv("DEAL_II_THREADS_PER_PROCESS");
+    unsigned int n_threads = 1;
+    if (threads != nullptr)
+      {
+        char      *end   = nullptr;
+        const long value = std::strtol(threads, &end, 10);
+        if (end == threads || *end != '\0' || value < 1 || value > 1024)
+          {
+            std::cerr << "Error: the environment variable "
+                         "DEAL_II_THREADS_PER_PROCESS is '"
+                      << threads
+                      << "': it must be a whole number of threads per "
+                         "process in [1, 1024]."
+                      << std::endl;
+            return 1;
+          }
+        n_threads = value;
+      }
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv, n_threads);
     const bool root = (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
     const unsigned int n_processes =

@@ -115,7 +115,9 @@ namespace ContactDynamics
       Patterns::Integer(0, 12),
       "Times every cell of the scene's mesh is split in 2^dim after it is "
       "built, in [0, 12] (each one multiplies the cells by 4 in 2-D). "
-      "Curved surfaces stay on their circles. With Mesh = distributed the "
+      "Curved surfaces of the built-in scenes stay on their circles (Gmsh "
+      "meshes have no curved description: their refined boundaries are "
+      "polygons). With Mesh = distributed the "
       "scene's mesh is the coarse mesh every process stores and only the "
       "refined cells are distributed: a coarse Refinement factor and "
       "refinements here keep the replicated part small.");
@@ -132,9 +134,10 @@ namespace ContactDynamics
       std::to_string(defaults.contact_cell_weight),
       Patterns::Integer(1, 1000),
       "Mesh = distributed: the load of a cell with a face on a secondary "
-      "contact surface, in units of a bulk cell's, in [1, 1000], so that "
-      "the contact work is balanced and not only the cells "
-      "(doc/parallel.md has the measured ratio of the costs).");
+      "contact surface, in units of a bulk cell's, in [1, 1000], for the "
+      "partition (a mortar node in contact costs about 20 neo-Hookean "
+      "cells per assembly, doc/parallel.md). Ignored with Mesh = "
+      "replicated.");
   }
 
   void

@@ -159,6 +159,20 @@ namespace ContactDynamics
           parallel::shared::Triangulation<dim>::partition_metis :
           parallel::shared::Triangulation<dim>::partition_zorder);
     scene.create_triangulation(*triangulation);
+    {
+      // refuse a refinement that could not fit in memory before making it
+      const double cells =
+        triangulation->n_global_active_cells() *
+        std::pow(2., dim * parallel_parameters.global_refinements);
+      AssertThrow(cells <= 1e8,
+                  ExcMessage(
+                    "Parallel/Global refinements = " +
+                    std::to_string(parallel_parameters.global_refinements) +
+                    " would make " + std::to_string(cells) + " cells from " +
+                    std::to_string(triangulation->n_global_active_cells()) +
+                    ": at most 1e8 are allowed (about 100 GB). Lower it or "
+                    "the Scene's Refinement factor."));
+    }
     triangulation->refine_global(parallel_parameters.global_refinements);
     if (auto distributed =
           dynamic_cast<parallel::distributed::Triangulation<dim> *>(

@@ -35,7 +35,8 @@ namespace ContactDynamics
    * M, C and the stiffness K of the linear elastic bodies do not depend on
    * the state: setup() assembles them once, and the residual takes their
    * part from matrix-vector products. Only the cells of nonlinear bodies
-   * are visited per Newton iteration (on all cores, WorkStream).
+   * are visited per Newton iteration (WorkStream; one thread per process
+   * unless DEAL_II_THREADS_PER_PROCESS asks for more).
    */
   template <int dim>
   class SolidMechanics
