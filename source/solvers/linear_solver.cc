@@ -62,15 +62,16 @@ namespace ContactDynamics
       "of at least 80,000 unknowns; below, UMFPACK on one process from "
       "20,000 unknowns, KLU otherwise (the crossovers measured on the 2-D "
       "scenes, doc/solvers.md; the run's log says which).");
-    prm.declare_entry("Linear tolerance",
-                      default_text(defaults.tolerance),
-                      Patterns::Double(1e-300, 1),
-                      "GMRES: solve to this fraction of the residual norm, "
-                      "in (0, 1). Newton still converges to its own "
-                      "tolerances (an inexact Newton method), only with more "
-                      "iterations when this is large. Contact makes the "
-                      "system ill-conditioned: below about 1e-8 GMRES can "
-                      "fail with a loss of precision.");
+    prm.declare_entry(
+      "Linear tolerance",
+      default_text(defaults.tolerance),
+      Patterns::Double(1e-300, 0.5),
+      "GMRES: solve to this fraction of the residual norm, "
+      "in (0, 0.5] (1 would be no reduction at all). Newton still converges to its own "
+      "tolerances (an inexact Newton method), only with more "
+      "iterations when this is large. Contact makes the "
+      "system ill-conditioned: below about 1e-8 GMRES can "
+      "fail with a loss of precision.");
     prm.declare_entry("Maximum linear iterations",
                       default_text(defaults.max_iterations),
                       Patterns::Integer(1),
