@@ -303,11 +303,14 @@ namespace ContactDynamics
     if (contact)
       contact->update_candidates(ghosted(u, u_ghost));
     // before the sparsity pattern: an iterative solver wants the fill-in
-    linear_solver_name =
-      newton.choose_linear_solver(dof_handler.n_dofs(),
-                                  integrator.is_dynamic(),
-                                  Utilities::MPI::n_mpi_processes(
-                                    mpi_communicator));
+    // (a refused solver is refused on every process: one message)
+    check_collectively(mpi_communicator, [&]() {
+      linear_solver_name =
+        newton.choose_linear_solver(dof_handler.n_dofs(),
+                                    integrator.is_dynamic(),
+                                    Utilities::MPI::n_mpi_processes(
+                                      mpi_communicator));
+    });
     setup_sparsity();
   }
 
