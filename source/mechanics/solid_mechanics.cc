@@ -11,6 +11,7 @@
 #include <contact_dynamics/mechanics/solid_mechanics.h>
 #include <contact_dynamics/parallel.h>
 
+#include <Epetra_CrsMatrix.h>
 #include <algorithm>
 #include <exception>
 
@@ -18,6 +19,8 @@ namespace ContactDynamics
 {
   namespace
   {
+    constexpr std::size_t none = static_cast<std::size_t>(-1);
+
     /**
      * The displacement's shape functions on one cell. They are those of the
      * scalar base element times unit vectors: displacement dof i of the
@@ -125,6 +128,7 @@ namespace ContactDynamics
       Vector<double>                       rhs, zero;
       std::vector<types::global_dof_index> dofs;
       double                               energy = 0;
+      std::size_t                          cell   = 0; // in a cell list
       // WorkStream aborts on exceptions that escape a worker: the first one
       // in the order of the cells is rethrown after the loop
       std::exception_ptr failure;
@@ -270,6 +274,85 @@ namespace ContactDynamics
                                     false);
     for (const auto i : dof_handler.locally_owned_dofs())
       dsp.add(i, i);
+    // a new pattern for the Jacobian follows
+    positions_found = false;
+  }
+
+  template <int dim>
+  void
+  SolidMechanics<dim>::find_positions(const MatrixType &jacobian) const
+  {
+    positions_found = true;
+    cell_positions.clear();
+    first_position.assign(nonlinear_cells.size(), none);
+    constant_positions.clear();
+    const Epetra_CrsMatrix &J = jacobian.trilinos_matrix();
+    int                    *row_start, *columns;
+    double                 *values;
+    if (J.ExtractCrsDataPointers(row_start, columns, values) != 0)
+      return;
+    // the position of entry (row, column) in global numbering, or -1
+    const auto position = [&](const long long row, const long long column) {
+      const int r = J.RowMap().LID(row), c = J.ColMap().LID(column);
+      if (r < 0 || c < 0)
+        return -1ll;
+      const int *begin = columns + row_start[r],
+                *end   = columns + row_start[r + 1];
+      // once per pattern: a linear search needs no sorted rows
+      const int *found = std::find(begin, end, c);
+      return found != end ? found - columns : -1ll;
+    };
+
+    const AffineConstraints<double> &constraints = *jacobian_constraints;
+    ScratchData<dim>                 s(dof_handler.get_fe());
+    const unsigned int               n = s.u_dofs.size();
+    position_dofs                      = s.u_dofs;
+    std::vector<types::global_dof_index> dofs(
+      dof_handler.get_fe().n_dofs_per_cell());
+    std::vector<unsigned int> cell(n * n);
+    for (std::size_t c = 0; c < nonlinear_cells.size(); ++c)
+      {
+        nonlinear_cells[c]->get_dof_indices(dofs);
+        bool complete = true;
+        for (unsigned int i = 0; i < n && complete; ++i)
+          {
+            const auto row = dofs[s.u_dofs[i]];
+            complete       = !constraints.is_constrained(row);
+            for (unsigned int j = 0; j < n && complete; ++j)
+              {
+                const long long p = position(row, dofs[s.u_dofs[j]]);
+                complete          = p >= 0;
+                cell[i * n + j]   = p;
+              }
+          }
+        if (complete)
+          {
+            first_position[c] = cell_positions.size();
+            cell_positions.insert(cell_positions.end(),
+                                  cell.begin(),
+                                  cell.end());
+          }
+      }
+
+    const Epetra_CrsMatrix &C = constant_jacobian.trilinos_matrix();
+    for (int r = 0; r < C.NumMyRows(); ++r)
+      {
+        int     length;
+        double *unused;
+        int    *local_columns;
+        C.ExtractMyRowView(r, length, unused, local_columns);
+        for (int k = 0; k < length; ++k)
+          {
+            const long long p =
+              position(C.RowMap().GID(r), C.ColMap().GID(local_columns[k]));
+            if (p < 0)
+              {
+                constant_positions.clear();
+                return;
+              }
+            constant_positions.push_back(p);
+          }
+      }
   }
 
   template <int dim>
@@ -441,6 +524,7 @@ namespace ContactDynamics
                             CopyData<dim>    &copy) {
       const CellIterator &cell = *it;
       const std::size_t   c    = it - nonlinear_cells.begin();
+      copy.cell                = c;
       s.reinit(&nonlinear_gradients[c * n_q * s.n_nodes],
                &nonlinear_JxW[c * n_q]);
       const Material<dim> &material = *materials[cell->material_id()];
@@ -471,11 +555,31 @@ namespace ContactDynamics
       if (tangent)
         mirror_upper_triangle(s, copy.matrix);
     };
-    const auto copier = [&](const CopyData<dim> &copy) {
+    // the cells' positions in the Jacobian's values, if found
+    double *values = nullptr;
+    if (tangent && !cell_positions.empty())
+      {
+        Assert(positions_found, ExcInternalError());
+        int *unused_start, *unused_columns;
+        tangent->trilinos_matrix().ExtractCrsDataPointers(unused_start,
+                                                          unused_columns,
+                                                          values);
+      }
+    const unsigned int n_u    = position_dofs.size();
+    const auto         copier = [&](const CopyData<dim> &copy) {
       energy += copy.energy;
       if (force)
         force->add(copy.dofs, copy.rhs);
-      if (tangent)
+      if (!tangent)
+        return;
+      if (values != nullptr && first_position[copy.cell] != none)
+        {
+          const unsigned int *p = &cell_positions[first_position[copy.cell]];
+          for (const unsigned int i : position_dofs)
+            for (const unsigned int j : position_dofs)
+              values[*p++] += copy.matrix(i, j);
+        }
+      else
         constraints.distribute_local_to_global(copy.matrix,
                                                copy.dofs,
                                                *tangent);
@@ -521,8 +625,25 @@ namespace ContactDynamics
             constant_jacobian_c_a = m;
             constant_jacobian_c_v = c;
           }
+        if (!positions_found)
+          find_positions(jacobian);
         jacobian = 0;
-        jacobian.add(1., constant_jacobian);
+        if (constant_positions.empty())
+          jacobian.add(1., constant_jacobian);
+        else
+          {
+            int    *unused_start, *unused_columns;
+            double *values, *constant_values;
+            jacobian.trilinos_matrix().ExtractCrsDataPointers(unused_start,
+                                                              unused_columns,
+                                                              values);
+            constant_jacobian.trilinos_matrix().ExtractCrsDataPointers(
+              unused_start,
+              unused_columns,
+              constant_values);
+            for (std::size_t k = 0; k < constant_positions.size(); ++k)
+              values[constant_positions[k]] += constant_values[k];
+          }
       }
 
     // an inverted element throws on its process only

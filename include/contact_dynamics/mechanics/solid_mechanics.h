@@ -149,6 +149,15 @@ namespace ContactDynamics
                        VectorType                      *force,
                        MatrixType                      *tangent) const;
 
+    /**
+     * Finds where the entries of the nonlinear cells' displacement blocks
+     * and of constant_jacobian sit in the value array of `jacobian`, whose
+     * sparsity pattern was made last. A cell with a constrained or
+     * non-owned dof keeps the general path through the constraints.
+     */
+    void
+    find_positions(const MatrixType &jacobian) const;
+
     /** x itself, or a copy without ghosts for matrix-vector products. */
     const VectorType &
     owned(const VectorType &x, VectorType &scratch) const;
@@ -172,6 +181,15 @@ namespace ContactDynamics
     mutable MatrixType constant_jacobian;
     mutable double     constant_jacobian_c_a = -1, constant_jacobian_c_v = -1;
     mutable VectorType scratch[3];
+    // the Jacobian's value array at these positions takes the entries
+    // directly instead of searching each one (per sparsity pattern; empty
+    // when the matrix's storage is not contiguous)
+    mutable bool                      positions_found = false;
+    mutable std::vector<unsigned int> cell_positions;
+    // per nonlinear cell: its first entry in cell_positions, or none
+    mutable std::vector<std::size_t>  first_position;
+    mutable std::vector<unsigned int> position_dofs; // the cell's u dofs
+    mutable std::vector<unsigned int> constant_positions;
   };
 } // namespace ContactDynamics
 
