@@ -282,7 +282,10 @@ namespace ContactDynamics
   void
   SolidMechanics<dim>::find_positions(const MatrixType &jacobian) const
   {
-    positions_found = true;
+    positions_found    = true;
+    positions_matrix   = &jacobian.trilinos_matrix();
+    positions_nonzeros = jacobian.trilinos_matrix().NumMyNonzeros();
+    positions_values   = nullptr;
     cell_positions.clear();
     first_position.assign(nonlinear_cells.size(), none);
     constant_positions.clear();
@@ -291,6 +294,7 @@ namespace ContactDynamics
     double                 *values;
     if (J.ExtractCrsDataPointers(row_start, columns, values) != 0)
       return;
+    positions_values = values;
     // the position of entry (row, column) in global numbering, or -1
     const auto position = [&](const long long row, const long long column) {
       const int r = J.RowMap().LID(row), c = J.ColMap().LID(column);
@@ -335,6 +339,11 @@ namespace ContactDynamics
       }
 
     const Epetra_CrsMatrix &C = constant_jacobian.trilinos_matrix();
+    // its values are read in storage order
+    int    *c_start, *c_columns;
+    double *c_values;
+    if (C.ExtractCrsDataPointers(c_start, c_columns, c_values) != 0)
+      return;
     for (int r = 0; r < C.NumMyRows(); ++r)
       {
         int     length;
@@ -353,6 +362,19 @@ namespace ContactDynamics
             constant_positions.push_back(p);
           }
       }
+  }
+
+  template <int dim>
+  bool
+  SolidMechanics<dim>::positions_fit(const MatrixType &jacobian) const
+  {
+    const Epetra_CrsMatrix &J = jacobian.trilinos_matrix();
+    int                    *unused_start, *unused_columns;
+    double                 *values = nullptr;
+    J.ExtractCrsDataPointers(unused_start, unused_columns, values);
+    return positions_found && positions_matrix == &J &&
+           positions_values == values &&
+           positions_nonzeros == J.NumMyNonzeros();
   }
 
   template <int dim>
@@ -557,16 +579,14 @@ namespace ContactDynamics
     };
     // the cells' positions in the Jacobian's values, if found
     double *values = nullptr;
-    if (tangent && !cell_positions.empty())
+    if (tangent && !cell_positions.empty() && positions_fit(*tangent))
       {
-        Assert(positions_found, ExcInternalError());
         int *unused_start, *unused_columns;
         tangent->trilinos_matrix().ExtractCrsDataPointers(unused_start,
                                                           unused_columns,
                                                           values);
       }
-    const unsigned int n_u    = position_dofs.size();
-    const auto         copier = [&](const CopyData<dim> &copy) {
+    const auto copier = [&](const CopyData<dim> &copy) {
       energy += copy.energy;
       if (force)
         force->add(copy.dofs, copy.rhs);
@@ -625,7 +645,7 @@ namespace ContactDynamics
             constant_jacobian_c_a = m;
             constant_jacobian_c_v = c;
           }
-        if (!positions_found)
+        if (!positions_fit(jacobian))
           find_positions(jacobian);
         jacobian = 0;
         if (constant_positions.empty())

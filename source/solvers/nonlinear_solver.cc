@@ -170,7 +170,7 @@ namespace ContactDynamics
       {
         result.failure = e.what();
       }
-    linear_solver.invalidate();
+    linear_solver.invalidate_after_failure();
     return false;
   }
 
@@ -224,7 +224,7 @@ namespace ContactDynamics
     catch (const std::exception &e)
       {
         result.failure = std::string("the linear solver failed: ") + e.what();
-        linear_solver.invalidate();
+        linear_solver.invalidate_after_failure();
         return false;
       }
   }
@@ -263,7 +263,7 @@ namespace ContactDynamics
                                      "the residual norm overflows (forces up to " +
                                  format_number(largest) + ")" :
                                      "the residual is not a finite number";
-            linear_solver.invalidate();
+            linear_solver.invalidate_after_failure();
             return result;
           }
         const bool stagnated = history.stagnated(it, norm);
@@ -283,6 +283,7 @@ namespace ContactDynamics
             result.failure = "no convergence in " +
                              std::to_string(max_iterations) +
                              " Newton iterations";
+            linear_solver.invalidate_after_failure();
             return result;
           }
 

@@ -158,6 +158,10 @@ namespace ContactDynamics
     void
     find_positions(const MatrixType &jacobian) const;
 
+    /** Whether the positions were found for this matrix's storage. */
+    bool
+    positions_fit(const MatrixType &jacobian) const;
+
     /** x itself, or a copy without ghosts for matrix-vector products. */
     const VectorType &
     owned(const VectorType &x, VectorType &scratch) const;
@@ -184,7 +188,12 @@ namespace ContactDynamics
     // the Jacobian's value array at these positions takes the entries
     // directly instead of searching each one (per sparsity pattern; empty
     // when the matrix's storage is not contiguous)
-    mutable bool                      positions_found = false;
+    mutable bool positions_found = false;
+    // the matrix they were found for (a safeguard besides the reset in
+    // make_sparsity_pattern): its Epetra object, values and their number
+    mutable const void               *positions_matrix   = nullptr;
+    mutable const double             *positions_values   = nullptr;
+    mutable int                       positions_nonzeros = -1;
     mutable std::vector<unsigned int> cell_positions;
     // per nonlinear cell: its first entry in cell_positions, or none
     mutable std::vector<std::size_t>  first_position;

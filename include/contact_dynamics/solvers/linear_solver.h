@@ -1,13 +1,13 @@
-// The linear solve of a Newton iteration: a sparse direct solver (Trilinos
-// Amesos KLU or MUMPS), GMRES with a block-wise direct preconditioner, or
-// GMRES with ML algebraic multigrid, chosen when the parameters are read
-// (or by size for 'auto'), with the reuse of a factorization or hierarchy
-// across solves behind one interface.
+// The linear solve of a Newton iteration: a sparse direct solver (KLU or
+// UMFPACK on one process, Trilinos Amesos KLU or MUMPS), GMRES with a
+// block-wise direct preconditioner, or GMRES with ML algebraic multigrid,
+// chosen when the parameters are read (or by size for 'auto'), with the reuse
+// of a factorization or hierarchy across solves behind one interface.
 #ifndef contact_dynamics_solvers_linear_solver_h
 #define contact_dynamics_solvers_linear_solver_h
 
+#include <contact_dynamics/solvers/direct_factorization.h>
 #include <contact_dynamics/solvers/trilinos_forward.h>
-#include <contact_dynamics/solvers/umfpack_factorization.h>
 
 #include <memory>
 #include <string>
@@ -84,6 +84,17 @@ namespace ContactDynamics
     }
 
     /**
+     * A Newton solve failed: besides invalidate(), KLU searches its pivots
+     * anew at the next factorization.
+     */
+    void
+    invalidate_after_failure()
+    {
+      invalidate();
+      klu.pivot_anew();
+    }
+
+    /**
      * Solves matrix * solution = -rhs, negating `rhs` in place, and
      * returns the number of GMRES iterations (0 for a direct solve).
      * Factorizes `matrix` first when needs_matrix(); `keep` lets the
@@ -124,8 +135,11 @@ namespace ContactDynamics
 
     std::unique_ptr<SolverControl>                  solver_control;
     std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
-    // kept across factorizations: its symbolic analysis is reused
-    UmfpackFactorization umfpack;
+    // on one process, kept across factorizations: the symbolic analysis
+    // (and KLU's pivot order) is reused
+    DirectFactorization umfpack{DirectFactorization::Method::umfpack};
+    DirectFactorization klu{DirectFactorization::Method::klu};
+    bool                use_own_klu = false;
     std::unique_ptr<TrilinosWrappers::PreconditionBlockwiseDirect>
          preconditioner;
     bool factorization_valid = false;

@@ -1,0 +1,160 @@
+// The one-process direct solvers (KLU with refactorization, UMFPACK) on
+// small matrices with known solutions:
+// 1. a nonsymmetric system: x against the solution written down by hand
+//    (a solver that solved the transpose would give another x);
+// 2. KLU reuses the pivot order of its last full factorization for a
+//    matrix with the same pattern and nearby values (no new pivoting), and
+//    pivots anew when the old order would divide by a pivot 1e-14 times the
+//    others (the count of full factorizations shows it; the solutions are
+//    exact to round-off in all cases);
+// 3. rows with only a diagonal entry beside a coupled block (the
+//    multipliers off the contact surfaces): exact solution, and a zero
+//    there is a singular matrix;
+// 4. a singular matrix is reported as singular by both.
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <contact_dynamics/solvers/direct_factorization.h>
+
+#include "tests.h"
+
+using namespace dealii;
+using ContactDynamics::DirectFactorization;
+
+namespace
+{
+  // a full pattern (every method sees the same structure), or the nonzero
+  // entries only
+  TrilinosWrappers::SparseMatrix
+  matrix(const std::vector<std::vector<double>> &rows, const bool full = true)
+  {
+    const unsigned int     n = rows.size();
+    DynamicSparsityPattern dsp(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        if (full || rows[i][j] != 0)
+          dsp.add(i, j);
+    TrilinosWrappers::SparseMatrix a;
+    a.reinit(complete_index_set(n), complete_index_set(n), dsp, MPI_COMM_WORLD);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        if (full || rows[i][j] != 0)
+          a.set(i, j, rows[i][j]);
+    a.compress(VectorOperation::insert);
+    return a;
+  }
+
+  // the largest error of the solution of a x = b against `exact`
+  double
+  error(DirectFactorization                  &solver,
+        const TrilinosWrappers::SparseMatrix &a,
+        const std::vector<double>            &exact)
+  {
+    const unsigned int            n = exact.size();
+    TrilinosWrappers::MPI::Vector x(complete_index_set(n), MPI_COMM_WORLD),
+      b(x);
+    for (unsigned int i = 0; i < n; ++i)
+      x[i] = exact[i];
+    a.vmult(b, x);
+    solver.factorize(a);
+    solver.solve(b, x);
+    double largest = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      largest = std::max(largest, std::abs(x[i] - exact[i]));
+    return largest;
+  }
+} // namespace
+
+int
+main()
+{
+  initlog();
+  for (const auto method :
+       {DirectFactorization::Method::klu, DirectFactorization::Method::umfpack})
+    {
+      const std::string name =
+        method == DirectFactorization::Method::klu ? "KLU" : "UMFPACK";
+      DirectFactorization solver(method);
+
+      // 1. nonsymmetric
+      const auto a = matrix({{2, 1, 0}, {0, 3, 2}, {1, 0, 4}});
+      check_close(name + ": nonsymmetric system, |x - exact|_max",
+                  error(solver, a, {1, -2, 3}),
+                  0,
+                  1e-14);
+      {
+        // by hand: a x = (2, 2, 5) for x = (1, 0, 1); the transposed
+        // system a^T y = (2, 2, 5) has y = (0.5, 0.5, 1)
+        TrilinosWrappers::MPI::Vector b(complete_index_set(3), MPI_COMM_WORLD),
+          x(b);
+        b[0] = 2;
+        b[1] = 2;
+        b[2] = 5;
+        solver.factorize(a);
+        solver.solve(b, x);
+        check_close(name + ": a x = (2, 2, 5) gives x = (1, 0, 1)",
+                    std::abs(x[0] - 1) + std::abs(x[1]) + std::abs(x[2] - 1),
+                    0,
+                    1e-14);
+      }
+
+      // 2. the same pattern, nearby values, then a pivot that vanishes
+      const auto b1 = matrix({{4, 1, 1}, {1, 4, 1}, {1, 1, 4}});
+      const auto b2 = matrix({{4.1, 1, 1.2}, {0.9, 4, 1}, {1, 1.1, 3.9}});
+      const auto b3 = matrix({{1e-14, 1, 1}, {1, 1e-14, 1}, {1, 1, 1}});
+      const std::vector<double> exact{1, -2, 3};
+      DirectFactorization       fresh(method);
+      check_close(name + ": diagonally dominant",
+                  error(fresh, b1, exact),
+                  0,
+                  1e-14);
+      const unsigned int pivoting = fresh.n_pivoting_factorizations();
+      check_close(name + ": nearby values", error(fresh, b2, exact), 0, 1e-14);
+      if (method == DirectFactorization::Method::klu)
+        check_true(name + ": nearby values reuse the pivot order",
+                   fresh.n_pivoting_factorizations() == pivoting);
+      check_close(name + ": vanishing diagonal",
+                  error(fresh, b3, exact),
+                  0,
+                  1e-13);
+      if (method == DirectFactorization::Method::klu)
+        check_true(name + ": a vanishing pivot makes it pivot anew",
+                   fresh.n_pivoting_factorizations() == pivoting + 1);
+      check_true(name + ": one analysis for one pattern",
+                 fresh.n_symbolic_analyses() == 1);
+
+      // 3. two decoupled rows beside a coupled block
+      const auto c =
+        matrix({{2, 1, 0, 0}, {1, 3, 0, 0}, {0, 0, 5, 0}, {0, 0, 0, 0.5}},
+               false);
+      DirectFactorization decoupled(method);
+      check_close(name + ": decoupled rows beside a coupled block",
+                  error(decoupled, c, {1, -2, 3, -4}),
+                  0,
+                  1e-14);
+
+      // 4. singular: a zero column; a zero in a decoupled row
+      const auto singular = [&](const TrilinosWrappers::SparseMatrix &s) {
+        try
+          {
+            DirectFactorization solver(method);
+            solver.factorize(s);
+          }
+        catch (const std::exception &e)
+          {
+            return std::string(e.what()).find("singular") != std::string::npos;
+          }
+        return false;
+      };
+      check_true(name + ": a zero column is reported as singular",
+                 singular(matrix({{1, 2, 0}, {3, 4, 0}, {5, 6, 0}})));
+      auto zero_row =
+        matrix({{2, 1, 0, 0}, {1, 3, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}, false);
+      const bool nonzero_singular = singular(zero_row);
+      zero_row.set(3, 3, 0.);
+      zero_row.compress(VectorOperation::insert);
+      check_true(name + ": a zero decoupled row is reported as singular",
+                 !nonzero_singular && singular(zero_row));
+    }
+}
