@@ -201,11 +201,17 @@ namespace ContactDynamics
       const double hi_v = std::min(1., std::max(xi_c, xi_d));
       if (hi_v - lo_v < 1e-12)
         return false;
-      // an end inside the face moves with the primary node it projects
+      // an end inside the face moves with the primary node it projects; a
+      // primary node projecting onto the face's end (within the sliver
+      // width dropped above) leaves it fixed, as the neighbouring face's
+      // dropped sliver would have compensated its motion (otherwise a
+      // secondary node on a primary vertex gets a one-sided tangential
+      // force that Newton cannot remove)
       const auto end = [&](const double       bound,
                            const Vec<Number> &y,
                            const double       xi) -> Number {
-        if (std::abs(bound - xi) > 0 || !exact)
+        if (std::abs(bound - xi) > 0 || !exact ||
+            std::abs(std::abs(xi) - 1) < 1e-12)
           return Number(bound);
         return MortarGeometry::project_along_normal_field(m.x0,
                                                           m.x1,
