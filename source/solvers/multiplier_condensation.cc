@@ -489,32 +489,52 @@ namespace ContactDynamics
         columns.push_back(it->column());
       return columns;
     };
+    // the condensation substitutes once, with the Jacobian's own rows:
+    // the fill comes from the pattern before any of it is added (adding
+    // group by group would spread fill along the surface)
+    std::vector<std::pair<std::vector<Index>, std::vector<Index>>> additions;
+    const auto add_to_rows = [&](const std::vector<Index> &rows,
+                                 std::vector<Index>        columns) {
+      std::sort(columns.begin(), columns.end());
+      columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+      additions.emplace_back(rows, std::move(columns));
+    };
     for (const auto &group : groups)
       {
-        std::vector<Index> fill;
+        // dlambda = -e - F du with F = E J_s, the group's displacement rows
+        std::vector<Index> displacement_columns, multiplier_columns;
         for (const Index i : group.displacements)
           {
             const auto c = columns_of(i);
-            fill.insert(fill.end(), c.begin(), c.end());
+            displacement_columns.insert(displacement_columns.end(),
+                                        c.begin(),
+                                        c.end());
           }
         for (const Index m : group.multipliers)
           {
             const auto c = columns_of(m);
-            fill.insert(fill.end(), c.begin(), c.end());
+            multiplier_columns.insert(multiplier_columns.end(),
+                                      c.begin(),
+                                      c.end());
           }
-        std::sort(fill.begin(), fill.end());
-        fill.erase(std::unique(fill.begin(), fill.end()), fill.end());
-        std::vector<Index> rows = group.displacements;
-        for (const Index m : group.multipliers)
-          {
-            const auto c = columns_of(m);
-            rows.insert(rows.end(), c.begin(), c.end());
-          }
-        for (const Index r : rows)
-          if (dsp.row_index_set().size() == 0 ||
-              dsp.row_index_set().is_element(r))
-            dsp.add_entries(r, fill.begin(), fill.end(), true);
+        // a row with a multiplier column (by the pattern's symmetry, a
+        // column of the multiplier's row) gets the columns of F; the
+        // group's own rows take the multiplier rows and Q_2^T J_s
+        add_to_rows(multiplier_columns, displacement_columns);
+        std::vector<Index> own = displacement_columns;
+        own.insert(own.end(),
+                   multiplier_columns.begin(),
+                   multiplier_columns.end());
+        add_to_rows(group.displacements, own);
       }
+    for (const auto &addition : additions)
+      for (const Index r : addition.first)
+        if (dsp.row_index_set().size() == 0 ||
+            dsp.row_index_set().is_element(r))
+          dsp.add_entries(r,
+                          addition.second.begin(),
+                          addition.second.end(),
+                          true);
   }
 
   void
