@@ -3,6 +3,7 @@
 
 #include <deal.II/fe/fe.h>
 
+#include <contact_dynamics/contact/clipping_geometry.h>
 #include <contact_dynamics/contact/contact_surface.h>
 
 #include <algorithm>
@@ -16,7 +17,6 @@ namespace ContactDynamics
                              const std::vector<types::boundary_id> &ids,
                              const unsigned int n_node_components)
   {
-    AssertThrow(dim == 2, ExcMessage("Contact is implemented in 2-D only."));
     const auto &fe = dof_handler.get_fe();
     reference.clear();
     dofs.clear();
@@ -25,12 +25,13 @@ namespace ContactDynamics
     reference_weight.clear();
     depth.clear();
 
-    // The faces of the locally owned cells, oriented there (outward normal
-    // = tangent turned clockwise), then gathered: every process gets the
-    // whole surface, O(surface) data, also from a distributed mesh. A
-    // record is x0, x1, the dofs of both nodes, depth, and whether the
-    // face runs from the second to the first node.
-    const unsigned int  record_size = 2 * dim + 2 * n_node_components + 2;
+    // The faces of the locally owned cells, oriented there, then gathered:
+    // every process gets the whole surface, O(surface) data, also from a
+    // distributed mesh. A record is the nodes' coordinates, their dofs,
+    // depth, and whether the face's normal by its node order points into
+    // the cell (then the order is reversed).
+    constexpr unsigned int n_v      = nodes_per_face;
+    const unsigned int  record_size = n_v * dim + n_v * n_node_components + 2;
     std::vector<double> records;
     std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -41,13 +42,19 @@ namespace ContactDynamics
                 ids.end())
             {
               cell->get_dof_indices(cell_dofs);
-              const std::array<unsigned int, 2> v{
-                {GeometryInfo<dim>::face_to_cell_vertices(f, 0),
-                 GeometryInfo<dim>::face_to_cell_vertices(f, 1)}};
+              std::array<unsigned int, n_v> v;
+              for (unsigned int i = 0; i < n_v; ++i)
+                v[i] = GeometryInfo<dim>::face_to_cell_vertices(f, i);
               const Tensor<1, dim> t = cell->vertex(v[1]) - cell->vertex(v[0]);
               Tensor<1, dim>       n;
-              n[0] = t[1];
-              n[1] = -t[0];
+              if constexpr (dim == 2)
+                {
+                  n[0] = t[1];
+                  n[1] = -t[0];
+                }
+              else
+                n =
+                  cross_product_3d(t, cell->vertex(v[2]) - cell->vertex(v[0]));
               for (const unsigned int cell_vertex : v)
                 for (unsigned int d = 0; d < dim; ++d)
                   records.push_back(cell->vertex(cell_vertex)[d]);
@@ -71,12 +78,12 @@ namespace ContactDynamics
     for (const auto &part : all_records)
       for (unsigned int r = 0; r + record_size <= part.size(); r += record_size)
         {
-          const double               *record = &part[r];
-          std::array<unsigned int, 2> face_nodes;
-          for (unsigned int v = 0; v < 2; ++v)
+          const double                 *record = &part[r];
+          std::array<unsigned int, n_v> face_nodes;
+          for (unsigned int v = 0; v < n_v; ++v)
             {
               const double *node_dofs =
-                record + 2 * dim + v * n_node_components;
+                record + n_v * dim + v * n_node_components;
               const auto key =
                 static_cast<types::global_dof_index>(node_dofs[0]);
               auto it = dof_to_node.find(key);
@@ -95,8 +102,9 @@ namespace ContactDynamics
                 }
               face_nodes[v] = it->second;
             }
+          // reversed: in 3-D, exchanging nodes 1 and 2 exchanges xi and eta
           if (record[record_size - 1] != 0)
-            std::swap(face_nodes[0], face_nodes[1]);
+            std::swap(face_nodes[0 + (dim == 3)], face_nodes[1 + (dim == 3)]);
           for (const unsigned int node : face_nodes)
             node_faces[node].push_back(faces.size());
           faces.push_back(face_nodes);
@@ -105,15 +113,30 @@ namespace ContactDynamics
 
     reference_weight.assign(reference.size(), 0.);
     for (const auto &face : faces)
-      {
-        const double length = reference[face[0]].distance(reference[face[1]]);
-        reference_weight[face[0]] += length / 2;
-        reference_weight[face[1]] += length / 2;
-      }
-    for (const auto &nf : node_faces)
-      AssertThrow(nf.size() <= 2,
-                  ExcMessage("A contact surface node belongs to more than two "
-                             "faces: the surface must be a curve."));
+      if constexpr (dim == 2)
+        {
+          const double length = reference[face[0]].distance(reference[face[1]]);
+          reference_weight[face[0]] += length / 2;
+          reference_weight[face[1]] += length / 2;
+        }
+      else
+        {
+          std::array<Tensor<1, 3>, 4> x;
+          for (unsigned int v = 0; v < 4; ++v)
+            for (unsigned int d = 0; d < dim; ++d)
+              x[v][d] = reference[face[v]][d];
+          for (const auto &q : ClippingGeometry::face_points(x))
+            {
+              const auto N = ClippingGeometry::shape(q.xi, q.eta);
+              for (unsigned int v = 0; v < 4; ++v)
+                reference_weight[face[v]] += q.weight * N[v];
+            }
+        }
+    if (dim == 2)
+      for (const auto &nf : node_faces)
+        AssertThrow(nf.size() <= 2,
+                    ExcMessage("A contact surface node belongs to more than "
+                               "two faces: the surface must be a curve."));
   }
 
   template <int dim>
@@ -121,6 +144,7 @@ namespace ContactDynamics
   ContactSurface<dim>::neighbour(const unsigned int node,
                                  const unsigned int face) const
   {
+    Assert(dim == 2, ExcNotImplemented());
     for (const unsigned int f : node_faces[node])
       if (f != face)
         return faces[f][0] == node ? faces[f][1] : faces[f][0];

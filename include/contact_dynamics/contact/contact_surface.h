@@ -1,9 +1,11 @@
-// A contact surface of a 2-D mesh: its nodes, faces and degrees of
-// freedom, and its current coordinates. Shared by the formulations.
+// A contact surface of a 2-D or 3-D mesh: its nodes, faces (segments or
+// bilinear quadrilaterals) and degrees of freedom, and its current
+// coordinates. Shared by the formulations.
 #ifndef contact_dynamics_contact_contact_surface_h
 #define contact_dynamics_contact_contact_surface_h
 
 #include <deal.II/base/bounding_box.h>
+#include <deal.II/base/geometry_info.h>
 #include <deal.II/base/point.h>
 
 #include <deal.II/dofs/dof_handler.h>
@@ -23,9 +25,14 @@ namespace ContactDynamics
   public:
     static constexpr unsigned int invalid = static_cast<unsigned int>(-1);
 
+    static constexpr unsigned int nodes_per_face =
+      GeometryInfo<dim>::vertices_per_face;
+
     /**
      * Collects the boundary faces with the given ids. Faces are oriented
-     * so that the outward normal is the tangent x1 - x0 turned clockwise.
+     * so that the outward normal is, in 2-D, the tangent x1 - x0 turned
+     * clockwise, in 3-D (x1 - x0) x (x2 - x0) (nodes numbered
+     * lexicographically, as deal.II numbers a quadrilateral's vertices).
      * `n_node_components` degrees of freedom are recorded per node: the
      * displacement first, then any multiplier components.
      */
@@ -57,31 +64,41 @@ namespace ContactDynamics
       return x;
     }
 
-    /** Bounding box of a face in the configuration u, and its length. */
+    /**
+     * Bounding box of a face in the configuration u, and its size (the
+     * length in 2-D, the longer diagonal in 3-D).
+     */
     BoundingBox<dim>
     face_box(const unsigned int                   face,
              const TrilinosWrappers::MPI::Vector &u,
              double                              &length) const
     {
-      const Point<dim> a = position(faces[face][0], u);
-      const Point<dim> b = position(faces[face][1], u);
-      BoundingBox<dim> box(std::make_pair(a, a));
-      box.merge_with(BoundingBox<dim>(std::make_pair(b, b)));
-      length = a.distance(b);
+      std::array<Point<dim>, nodes_per_face> x;
+      for (unsigned int v = 0; v < nodes_per_face; ++v)
+        x[v] = position(faces[face][v], u);
+      BoundingBox<dim> box(std::make_pair(x[0], x[0]));
+      for (unsigned int v = 1; v < nodes_per_face; ++v)
+        box.merge_with(BoundingBox<dim>(std::make_pair(x[v], x[v])));
+      length = x[0].distance(x[nodes_per_face - 1]);
+      if (dim == 3)
+        length = std::max(length, x[1].distance(x[2]));
       return box;
     }
 
-    /** The other node of the face at `node` that is not `face`, or invalid. */
+    /**
+     * 2-D: the other node of the face at `node` that is not `face`, or
+     * invalid.
+     */
     unsigned int
     neighbour(const unsigned int node, const unsigned int face) const;
 
-    std::vector<Point<dim>> reference;                       // node positions
-    std::vector<std::vector<types::global_dof_index>> dofs;  // per node
-    std::vector<std::array<unsigned int, 2>>          faces; // node indices
-    std::vector<std::vector<unsigned int>>            node_faces;
+    std::vector<Point<dim>> reference; // node positions
+    std::vector<std::vector<types::global_dof_index>>     dofs;  // per node
+    std::vector<std::array<unsigned int, nodes_per_face>> faces; // nodes
+    std::vector<std::vector<unsigned int>>                node_faces;
     std::vector<double> reference_weight; // integral N_j
-    // per face: area of its cell / face length (reference), the element's
-    // extent normal to the face
+    // per face: measure of its cell / measure of the face (reference), the
+    // element's extent normal to the face
     std::vector<double> depth;
   };
 } // namespace ContactDynamics
