@@ -18,7 +18,9 @@
 // 5. the dual basis of a bilinear face: on a square the closed form
 //    psi_0 = 4 N_0 - 2 N_1 - 2 N_2 + N_3 (Wohlmuth 2000, lexicographic
 //    numbering); on a flat distorted quadrilateral biorthogonality checked
-//    with a 5 x 5 Gauss rule, independent of the 2 x 2 rule that built it.
+//    with a 5 x 5 Gauss rule, independent of the 2 x 2 rule that built it;
+// 6. nodal normals averaged from the corner normals of the faces around a
+//    node: (1, 1, 1) / sqrt 3 at a cube's corner, exact on a flat face.
 #include <deal.II/differentiation/ad/sacado_math.h>
 #include <deal.II/differentiation/ad/sacado_number_types.h>
 #include <deal.II/differentiation/ad/sacado_product_types.h>
@@ -263,6 +265,38 @@ main()
                 std::abs(area.dx(0) + (1 - s)) + std::abs(area.dx(1) + (1 - s)),
                 0,
                 1e-14);
+  }
+
+  // 6. nodal normals: at a cube's corner the three face normals average
+  // to (1, 1, 1) / sqrt 3; on a flat face every corner has its normal
+  {
+    std::array<Vec3<double>, 4> xy, yz, zx;
+    const double                corner[4][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+    for (unsigned int a = 0; a < 4; ++a)
+      {
+        // faces of the unit cube through (1, 1, 1), oriented outward
+        xy[a][0] = corner[a][0];
+        xy[a][1] = corner[a][1];
+        xy[a][2] = 1;
+        yz[a][0] = 1;
+        yz[a][1] = corner[a][0];
+        yz[a][2] = corner[a][1];
+        zx[a][0] = corner[a][1];
+        zx[a][1] = 1;
+        zx[a][2] = corner[a][0];
+      }
+    const Vec3<double> n = averaged_normal<double>(
+      {corner_normal(xy, 3), corner_normal(yz, 3), corner_normal(zx, 3)});
+    check_close("cube corner: averaged normal",
+                std::abs(n[0] - 1 / std::sqrt(3.)) +
+                  std::abs(n[1] - 1 / std::sqrt(3.)) +
+                  std::abs(n[2] - 1 / std::sqrt(3.)),
+                0,
+                1e-15);
+    double flat = 0;
+    for (unsigned int a = 0; a < 4; ++a)
+      flat = std::max(flat, std::abs(corner_normal(xy, a)[2] - 1));
+    check_close("flat face: every corner normal", flat, 0, 1e-15);
   }
 
   // 5. the dual basis

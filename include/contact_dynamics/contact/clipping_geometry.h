@@ -99,6 +99,34 @@ namespace ContactDynamics
     }
 
     /**
+     * The unit normal (dx/dxi x dx/deta, normalized) of face x at its node
+     * a, where the face's tangents are those of the corner.
+     */
+    template <typename Number>
+    Vec3<Number>
+    corner_normal(const std::array<Vec3<Number>, 4> &x, const unsigned int a)
+    {
+      const auto t =
+        tangents(x, Number((a % 2) ? 1. : 0.), Number((a / 2) ? 1. : 0.));
+      Vec3<Number> n = cross(t[0], t[1]);
+      return n / norm(n);
+    }
+
+    /**
+     * A node's normal: the normalized sum of the unit corner normals of
+     * the faces around it (as the 2-D code averages its faces' normals).
+     */
+    template <typename Number>
+    Vec3<Number>
+    averaged_normal(const std::vector<Vec3<Number>> &corner_normals)
+    {
+      Vec3<Number> sum;
+      for (const auto &n : corner_normals)
+        sum += n;
+      return sum / norm(sum);
+    }
+
+    /**
      * The auxiliary plane of a secondary face: through `center`, with unit
      * normal `normal` and an orthonormal in-plane basis. The basis only
      * names coordinates: areas and the points mapped back do not depend on
