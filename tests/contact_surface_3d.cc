@@ -6,7 +6,11 @@
 //    adjacent face's area (corners 0.25, interior nodes 1), summing to 6;
 // 2. every face of a sheared, rotated cube with 3 x 3 x 3 cells: each face
 //    normal points away from the cube's center, and the weights sum to the
-//    sum of deal.II's face measures (planar faces: exact).
+//    sum of deal.II's face measures (planar faces: exact);
+// 3. the R-tree search on 3-D face boxes: the candidates of the box's top
+//    faces among the bottom faces of a finer, rotated box above it, with
+//    the boxes enlarged by the gap, are the pairs whose boxes overlap by a
+//    brute-force comparison of all pairs.
 #include <deal.II/dofs/dof_handler.h>
 
 #include <deal.II/fe/fe_q.h>
@@ -15,6 +19,9 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <contact_dynamics/contact/contact_search.h>
 #include <contact_dynamics/contact/contact_surface.h>
 
 #include "tests.h"
@@ -130,5 +137,66 @@ main()
                 total / measure,
                 1,
                 1e-13);
+  }
+
+  // 3. search
+  {
+    Triangulation<3> lower, upper;
+    GridGenerator::subdivided_hyper_rectangle(lower,
+                                              {4, 4, 1},
+                                              Point<3>(0, 0, 0),
+                                              Point<3>(2, 2, 0.5),
+                                              true);
+    GridGenerator::subdivided_hyper_rectangle(upper,
+                                              {7, 5, 1},
+                                              Point<3>(0.6, 0.3, 0.55),
+                                              Point<3>(1.6, 1.3, 1),
+                                              true);
+    GridTools::rotate(Tensor<1, 3>({0., 0., 1.}), 0.3, upper);
+    DoFHandler<3> lower_dofs(lower), upper_dofs(upper);
+    lower_dofs.distribute_dofs(fe);
+    upper_dofs.distribute_dofs(fe);
+    ContactSurface<3> secondary, primary;
+    secondary.build(lower_dofs, {5}, 3);
+    primary.build(upper_dofs, {4}, 3);
+    const TrilinosWrappers::MPI::Vector u_s(complete_index_set(
+                                              lower_dofs.n_dofs()),
+                                            MPI_COMM_WORLD),
+      u_p(complete_index_set(upper_dofs.n_dofs()), MPI_COMM_WORLD);
+    std::vector<BoundingBox<3>> s_boxes, p_boxes;
+    double                      size;
+    for (unsigned int f = 0; f < secondary.n_faces(); ++f)
+      {
+        s_boxes.push_back(secondary.face_box(f, u_s, size));
+        s_boxes.back().extend(0.06);
+      }
+    for (unsigned int f = 0; f < primary.n_faces(); ++f)
+      p_boxes.push_back(primary.face_box(f, u_p, size));
+    const auto candidates =
+      ContactDynamics::find_candidate_pairs(s_boxes, p_boxes);
+    bool         same    = true;
+    unsigned int n_pairs = 0, without = 0;
+    for (unsigned int i = 0; i < s_boxes.size(); ++i)
+      {
+        std::vector<unsigned int> expected;
+        for (unsigned int j = 0; j < p_boxes.size(); ++j)
+          {
+            bool overlap = true;
+            for (unsigned int d = 0; d < 3; ++d)
+              overlap =
+                overlap &&
+                s_boxes[i].lower_bound(d) <= p_boxes[j].upper_bound(d) &&
+                p_boxes[j].lower_bound(d) <= s_boxes[i].upper_bound(d);
+            if (overlap)
+              expected.push_back(j);
+          }
+        same = same && expected == candidates[i];
+        n_pairs += expected.size();
+        without += expected.empty();
+      }
+    check_true("search: the R-tree's candidates are the overlapping pairs",
+               same);
+    check_true("search: some faces have candidates, some none",
+               n_pairs > 0 && without > 0);
   }
 }
