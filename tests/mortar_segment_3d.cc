@@ -13,6 +13,10 @@
 //   secondary nodes (biorthogonality);
 // and the AD derivatives of a weighted gap with respect to primary
 // coordinates (moving the clip vertices) match central differences.
+// A partially covered face (two primary faces over 60 % of it): the dual
+// basis built from the segments' points is biorthogonal on the covered part
+// under an independent 5 x 5 Gauss rule over that rectangle, sums to 1, and
+// gives every node the normalized gap delta.
 #include <deal.II/differentiation/ad/sacado_math.h>
 #include <deal.II/differentiation/ad/sacado_number_types.h>
 #include <deal.II/differentiation/ad/sacado_product_types.h>
@@ -219,11 +223,90 @@ main()
         largest         = std::max(largest, std::abs(ad[d] - fd));
         scale           = std::max(scale, std::abs(fd));
       }
-    record_measured("AD against differences, relative", largest / scale, 0, 1e-6);
+    record_measured("AD against differences, relative",
+                    largest / scale,
+                    0,
+                    1e-6);
     check_true("the primary node moves the weighted gap", scale > 1e-3);
     check_close("weighted gap: AD derivatives against central differences",
                 largest / scale,
                 0,
                 1e-6);
+  }
+
+  // a face of which [0.4, 1] x [0, 1] is covered, by two primary faces
+  {
+    std::array<V, 4> xs, ns, lower, upper;
+    const double     corner[4][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+    for (unsigned int a = 0; a < 4; ++a)
+      {
+        xs[a] = vec(corner[a][0], corner[a][1], 0);
+        ns[a] = vec(0, 0, 1);
+        lower[a] =
+          vec(0.4 + 1.3 * corner[a][0], -0.3 + 0.9 * corner[a][1], delta);
+        upper[a] =
+          vec(0.4 + 1.3 * corner[a][0], 0.6 + 0.9 * corner[a][1], delta);
+      }
+    std::vector<SegmentPoint<double>> points;
+    const bool overlap = segment_points(xs, ns, lower, 1e-12, points) &&
+                         segment_points(xs, ns, upper, 1e-12, points);
+    check_true("partial coverage: both primary faces overlap", overlap);
+    const auto   dual        = dual_coefficients(secondary_points(points));
+    const double g[5]        = {-0.906179845938664,
+                                -0.538469310105683,
+                                0,
+                                0.538469310105683,
+                                0.906179845938664};
+    const double w[5]        = {0.236926885056189,
+                                0.478628670499366,
+                                0.568888888888889,
+                                0.478628670499366,
+                                0.236926885056189};
+    double       psi_n[4][4] = {}, n_k[4] = {}, unity = 0;
+    for (unsigned int i = 0; i < 5; ++i)
+      for (unsigned int l = 0; l < 5; ++l)
+        {
+          // the covered rectangle, area 0.6
+          const double xi = 0.4 + 0.6 * (1 + g[i]) / 2, eta = (1 + g[l]) / 2;
+          const double da      = 0.6 * w[i] * w[l] / 4;
+          const auto   N       = shape(xi, eta);
+          double       sum_psi = 0;
+          for (unsigned int j = 0; j < 4; ++j)
+            {
+              double psi = 0;
+              for (unsigned int k = 0; k < 4; ++k)
+                psi += dual[j][k] * N[k];
+              sum_psi += psi;
+              for (unsigned int k = 0; k < 4; ++k)
+                psi_n[j][k] += psi * N[k] * da;
+            }
+          for (unsigned int k = 0; k < 4; ++k)
+            n_k[k] += N[k] * da;
+          unity = std::max(unity, std::abs(sum_psi - 1));
+        }
+    double bi = 0;
+    for (unsigned int j = 0; j < 4; ++j)
+      for (unsigned int k = 0; k < 4; ++k)
+        bi = std::max(bi, std::abs(psi_n[j][k] - (j == k ? n_k[k] : 0.)));
+    record_measured("partial coverage: biorthogonality error", bi, 0, 1e-13);
+    check_close("partial coverage: biorthogonal on the covered part",
+                bi,
+                0,
+                1e-13);
+    check_close("partial coverage: sum of psi is 1", unity, 0, 1e-13);
+    SegmentIntegrals<double>          r;
+    std::vector<SegmentPoint<double>> lower_points, upper_points;
+    segment_points(xs, ns, lower, 1e-12, lower_points);
+    segment_points(xs, ns, upper, 1e-12, upper_points);
+    add_segment_integrals(xs, ns, lower, dual, lower_points, r);
+    add_segment_integrals(xs, ns, upper, dual, upper_points, r);
+    double gap_error = 0;
+    for (unsigned int j = 0; j < 4; ++j)
+      gap_error = std::max(gap_error, std::abs(r.gap[j] / r.D[j] - delta));
+    check_close("partial coverage: normalized gaps equal the distance",
+                gap_error,
+                0,
+                1e-13);
+    check_close("partial coverage: covered area", r.area, 0.6, 1e-14);
   }
 }

@@ -494,26 +494,36 @@ namespace ContactDynamics
     };
 
     /**
-     * The mortar integrals of a secondary face xs (nodal unit normals ns,
-     * dual coefficients `dual`) against a primary face xm: the auxiliary
-     * plane through the secondary face's center with its interpolated
-     * normal there, both faces projected onto it along that normal and
-     * clipped, the clip polygon triangulated, and at each point of the
-     * 6-point rule on each triangle the points of both faces hit along the
-     * plane's normal (Popp, Gee and Wall 2009: the integration cells live
-     * in the plane; exact for flat secondary faces). The gap at a point is
-     * measured along the interpolated normal of the secondary face.
+     * A quadrature point of a mortar segment: its parameters on the
+     * secondary and on the primary face, and its weight (area in the
+     * auxiliary plane).
+     */
+    template <typename Number>
+    struct SegmentPoint
+    {
+      Number xi_s, eta_s, xi_m, eta_m, weight;
+    };
+
+    /**
+     * The quadrature points of the segment of a secondary face xs (nodal
+     * unit normals ns) and a primary face xm, appended to `points`: the
+     * auxiliary plane through the secondary face's center with its
+     * interpolated normal there, both faces projected onto it along that
+     * normal and clipped, the clip polygon triangulated, and at each point
+     * of the 6-point rule on each triangle the points of both faces hit
+     * along the plane's normal (Popp, Gee and Wall 2009: the integration
+     * cells live in the plane; exact for flat secondary faces).
      * `tolerance` is relative to the secondary face's diameter. False if
-     * the faces do not overlap (or a projection fails).
+     * the faces do not overlap (or a projection fails; then nothing is
+     * appended).
      */
     template <typename Number>
     bool
-    integrate_segment(const std::array<Vec3<Number>, 4>          &xs,
-                      const std::array<Vec3<Number>, 4>          &ns,
-                      const std::array<Vec3<Number>, 4>          &xm,
-                      const std::array<std::array<Number, 4>, 4> &dual,
-                      const double                                tolerance,
-                      SegmentIntegrals<Number>                   &result)
+    segment_points(const std::array<Vec3<Number>, 4> &xs,
+                   const std::array<Vec3<Number>, 4> &ns,
+                   const std::array<Vec3<Number>, 4> &xm,
+                   const double                       tolerance,
+                   std::vector<SegmentPoint<Number>> &points)
     {
       const Number       half   = 0.5;
       const Vec3<Number> center = interpolate(xs, half, half);
@@ -540,12 +550,12 @@ namespace ContactDynamics
           xs_d[a] = to_double(xs[a]);
           xm_d[a] = to_double(xm[a]);
         }
-      const Vec3<double> normal_d = to_double(normal);
+      const Vec3<double>                normal_d = to_double(normal);
+      std::vector<SegmentPoint<Number>> found;
       for (const auto &triangle : triangulate(clip))
         {
           const Number area =
             signed_area(Polygon<Number>(triangle.begin(), triangle.end()));
-          result.area += area;
           for (const auto &[b, w] : triangle_rule())
             {
               Point2<Number> q;
@@ -571,26 +581,82 @@ namespace ContactDynamics
                 projection_with_derivatives(xs, p, normal, s[0], s[1], s[2]);
               const auto pm =
                 projection_with_derivatives(xm, p, normal, m[0], m[1], m[2]);
-              const auto   Ns = shape(ps[0], ps[1]);
-              const auto   Nm = shape(pm[0], pm[1]);
-              Vec3<Number> n  = interpolate(ns, ps[0], ps[1]);
-              n /= norm(n);
-              const Number g = (interpolate(xm, pm[0], pm[1]) -
-                                interpolate(xs, ps[0], ps[1])) *
-                               n;
-              const Number dA = area * w;
-              for (unsigned int j = 0; j < 4; ++j)
-                {
-                  Number psi = 0.;
-                  for (unsigned int k = 0; k < 4; ++k)
-                    psi += dual[j][k] * Ns[k];
-                  result.D[j] += psi * dA;
-                  result.gap[j] += psi * g * dA;
-                  for (unsigned int k = 0; k < 4; ++k)
-                    result.M[j][k] += psi * Nm[k] * dA;
-                }
+              found.push_back({ps[0], ps[1], pm[0], pm[1], Number(area * w)});
             }
         }
+      points.insert(points.end(), found.begin(), found.end());
+      return true;
+    }
+
+    /**
+     * The points of a face's segments as points of the face, for
+     * dual_coefficients() of a partially covered face (the 2-D rule: the
+     * dual basis is biorthogonal on what is integrated).
+     */
+    template <typename Number>
+    std::vector<FacePoint<Number>>
+    secondary_points(const std::vector<SegmentPoint<Number>> &points)
+    {
+      std::vector<FacePoint<Number>> result;
+      for (const auto &q : points)
+        result.push_back({q.xi_s, q.eta_s, q.weight});
+      return result;
+    }
+
+    /**
+     * Adds the mortar integrals at a segment's points: D_j, M_jk and the
+     * weighted gap, the gap measured along the interpolated normal of the
+     * secondary face.
+     */
+    template <typename Number>
+    void
+    add_segment_integrals(const std::array<Vec3<Number>, 4>          &xs,
+                          const std::array<Vec3<Number>, 4>          &ns,
+                          const std::array<Vec3<Number>, 4>          &xm,
+                          const std::array<std::array<Number, 4>, 4> &dual,
+                          const std::vector<SegmentPoint<Number>>    &points,
+                          SegmentIntegrals<Number>                   &result)
+    {
+      for (const auto &q : points)
+        {
+          const auto   Ns = shape(q.xi_s, q.eta_s);
+          const auto   Nm = shape(q.xi_m, q.eta_m);
+          Vec3<Number> n  = interpolate(ns, q.xi_s, q.eta_s);
+          n /= norm(n);
+          const Number g = (interpolate(xm, q.xi_m, q.eta_m) -
+                            interpolate(xs, q.xi_s, q.eta_s)) *
+                           n;
+          result.area += q.weight;
+          for (unsigned int j = 0; j < 4; ++j)
+            {
+              Number psi = 0.;
+              for (unsigned int k = 0; k < 4; ++k)
+                psi += dual[j][k] * Ns[k];
+              result.D[j] += psi * q.weight;
+              result.gap[j] += psi * g * q.weight;
+              for (unsigned int k = 0; k < 4; ++k)
+                result.M[j][k] += psi * Nm[k] * q.weight;
+            }
+        }
+    }
+
+    /**
+     * segment_points() and add_segment_integrals() of one face pair with
+     * given dual coefficients. False if the faces do not overlap.
+     */
+    template <typename Number>
+    bool
+    integrate_segment(const std::array<Vec3<Number>, 4>          &xs,
+                      const std::array<Vec3<Number>, 4>          &ns,
+                      const std::array<Vec3<Number>, 4>          &xm,
+                      const std::array<std::array<Number, 4>, 4> &dual,
+                      const double                                tolerance,
+                      SegmentIntegrals<Number>                   &result)
+    {
+      std::vector<SegmentPoint<Number>> points;
+      if (!segment_points(xs, ns, xm, tolerance, points))
+        return false;
+      add_segment_integrals(xs, ns, xm, dual, points, result);
       return true;
     }
   } // namespace ClippingGeometry
