@@ -4,6 +4,8 @@
 // rotated 4 x 4 primary mesh covering it. Parallelogram faces make every
 // integrand a polynomial of degree 4 in the plane, which the 6-point rule
 // integrates exactly, so the identities of dual mortar hold to round-off:
+// with the primary faces facing the secondary side (as two bodies' faces
+// do) and with the same orientation:
 // - the D_j of the secondary nodes sum to the area of the surface (1);
 // - the weighted gap of every node is delta D_j (the normalized gap is the
 //   distance);
@@ -107,66 +109,79 @@ main()
              delta * nu;
     });
 
-  const unsigned int  n_s = secondary.nodes.size(), n_m = primary.nodes.size();
-  std::vector<double> D(n_s, 0.), gap(n_s, 0.);
-  std::vector<std::vector<double>> M(n_s, std::vector<double>(n_m, 0.));
-  const std::array<V, 4>           normals{{nu, nu, nu, nu}};
-  for (unsigned int f = 0; f < secondary.faces.size(); ++f)
+  // the primary faces as their own body numbers them (normals facing the
+  // secondary side), and with the opposite orientation
+  const std::array<V, 4> normals{{nu, nu, nu, nu}};
+  Mesh                   facing = primary;
+  for (auto &f : facing.faces)
+    std::swap(f[1], f[2]);
+  for (const Mesh *mesh : std::array<const Mesh *, 2>{{&facing, &primary}})
     {
-      const auto xs   = face_nodes<double>(secondary, f);
-      const auto dual = dual_coefficients(face_points(xs));
-      for (unsigned int g = 0; g < primary.faces.size(); ++g)
+      const std::string name =
+        mesh == &facing ? "facing primary faces: " : "same orientation: ";
+      const unsigned int n_s = secondary.nodes.size(), n_m = mesh->nodes.size();
+      std::vector<double>              D(n_s, 0.), gap(n_s, 0.);
+      std::vector<std::vector<double>> M(n_s, std::vector<double>(n_m, 0.));
+      for (unsigned int f = 0; f < secondary.faces.size(); ++f)
         {
-          SegmentIntegrals<double> r;
-          if (!integrate_segment(xs,
-                                 normals,
-                                 face_nodes<double>(primary, g),
-                                 dual,
-                                 1e-12,
-                                 r))
-            continue;
-          for (unsigned int j = 0; j < 4; ++j)
+          const auto xs   = face_nodes<double>(secondary, f);
+          const auto dual = dual_coefficients(face_points(xs));
+          for (unsigned int g = 0; g < mesh->faces.size(); ++g)
             {
-              const unsigned int J = secondary.faces[f][j];
-              D[J] += r.D[j];
-              gap[J] += r.gap[j];
-              for (unsigned int k = 0; k < 4; ++k)
-                M[J][primary.faces[g][k]] += r.M[j][k];
+              SegmentIntegrals<double> r;
+              if (!integrate_segment(xs,
+                                     normals,
+                                     face_nodes<double>(*mesh, g),
+                                     dual,
+                                     1e-12,
+                                     r))
+                continue;
+              for (unsigned int j = 0; j < 4; ++j)
+                {
+                  const unsigned int J = secondary.faces[f][j];
+                  D[J] += r.D[j];
+                  gap[J] += r.gap[j];
+                  for (unsigned int k = 0; k < 4; ++k)
+                    M[J][mesh->faces[g][k]] += r.M[j][k];
+                }
             }
         }
-    }
-  double     total = 0, gap_error = 0, row_error = 0, linear_error = 0;
-  const auto linear = [](const V &x) {
-    return 0.7 + x[0] - 2 * x[1] + 3 * x[2];
-  };
-  for (unsigned int j = 0; j < n_s; ++j)
-    {
-      total += D[j];
-      gap_error  = std::max(gap_error, std::abs(gap[j] / D[j] - delta));
-      double row = 0, projected = 0;
-      for (unsigned int k = 0; k < n_m; ++k)
+      double     total = 0, gap_error = 0, row_error = 0, linear_error = 0;
+      const auto linear = [](const V &x) {
+        return 0.7 + x[0] - 2 * x[1] + 3 * x[2];
+      };
+      for (unsigned int j = 0; j < n_s; ++j)
         {
-          row += M[j][k];
-          projected += M[j][k] * linear(primary.nodes[k]);
+          total += D[j];
+          gap_error  = std::max(gap_error, std::abs(gap[j] / D[j] - delta));
+          double row = 0, projected = 0;
+          for (unsigned int k = 0; k < n_m; ++k)
+            {
+              row += M[j][k];
+              projected += M[j][k] * linear(mesh->nodes[k]);
+            }
+          row_error = std::max(row_error, std::abs(row - D[j]) / D[j]);
+          // the primary nodes lie delta above: the field there is shifted by
+          // delta times its gradient along the normal
+          const double expected =
+            linear(secondary.nodes[j]) + delta * (nu * vec(1, -2, 3));
+          linear_error =
+            std::max(linear_error, std::abs(projected / D[j] - expected));
         }
-      row_error = std::max(row_error, std::abs(row - D[j]) / D[j]);
-      // the primary nodes lie delta above: the field there is shifted by
-      // delta times its gradient along the normal
-      const double expected =
-        linear(secondary.nodes[j]) + delta * (nu * vec(1, -2, 3));
-      linear_error =
-        std::max(linear_error, std::abs(projected / D[j] - expected));
+      record_measured(name + "normalized gap error", gap_error, 0, 1e-13);
+      record_measured(name + "row sum error", row_error, 0, 1e-13);
+      record_measured(name + "linear field error", linear_error, 0, 1e-12);
+      check_close(name + "sum of D_j: the surface's area", total, 1, 1e-13);
+      check_close(name + "normalized weighted gaps equal the distance",
+                  gap_error,
+                  0,
+                  1e-13);
+      check_close(name + "sum_k M_jk = D_j", row_error, 0, 1e-13);
+      check_close(name + "D^-1 M reproduces a linear field",
+                  linear_error,
+                  0,
+                  1e-12);
     }
-  record_measured("normalized gap error", gap_error, 0, 1e-13);
-  record_measured("row sum error", row_error, 0, 1e-13);
-  record_measured("linear field error", linear_error, 0, 1e-12);
-  check_close("sum of D_j: the surface's area", total, 1, 1e-13);
-  check_close("normalized weighted gaps equal the distance",
-              gap_error,
-              0,
-              1e-13);
-  check_close("sum_k M_jk = D_j", row_error, 0, 1e-13);
-  check_close("D^-1 M reproduces a linear field", linear_error, 0, 1e-12);
 
   // derivatives of the weighted gap of the secondary face 4's node 0 with
   // respect to a primary node's three coordinates

@@ -3,7 +3,8 @@
 // 1. clipping of squares and polygons in the degenerate configurations a
 //    mesh produces: full coverage, a shared edge, a shared corner, a vertex
 //    on an edge, coincident vertices, a sliver narrower than the tolerance
-//    and one wider, a face containing the other, disjoint faces, a 45
+//    and one wider, a face containing the other, disjoint faces, a clip
+//    polygon with an edge of length 0 (a degenerate face), a 45
 //    degree rotation (the regular octagon, area 2 (sqrt 2 - 1)), a cut
 //    through two vertices; areas against the exact values, no duplicate
 //    vertices;
@@ -126,6 +127,11 @@ main()
              unit,
              2 * (std::sqrt(2.) - 1),
              8);
+  check_clip("clip polygon with a repeated vertex (an edge of length 0)",
+             square(0.5, 0.5),
+             {{{0, 0}}, {{1, 0}}, {{1, 0}}, {{1, 1}}, {{0, 1}}},
+             0.25,
+             4);
   check_clip("cut through two vertices",
              {{{0, 0}}, {{1, 1}}, {{-1, 1}}},
              unit,

@@ -478,27 +478,25 @@ namespace ContactDynamics
     condensed_matrix->compress(VectorOperation::insert);
   }
 
-  void
-  MultiplierCondensation::add_fill_in(
-    DynamicSparsityPattern             &dsp,
-    const std::vector<MultiplierGroup> &groups)
+  std::vector<MultiplierCondensation::FillIn>
+  MultiplierCondensation::fill_in(const DynamicSparsityPattern       &pattern,
+                                  const std::vector<MultiplierGroup> &groups)
   {
     const auto columns_of = [&](const Index row) {
       std::vector<Index> columns;
-      for (auto it = dsp.begin(row); it != dsp.end(row); ++it)
+      for (auto it = pattern.begin(row); it != pattern.end(row); ++it)
         columns.push_back(it->column());
       return columns;
     };
-    // the condensation substitutes once, with the Jacobian's own rows:
-    // the fill comes from the pattern before any of it is added (adding
-    // group by group would spread fill along the surface)
-    std::vector<std::pair<std::vector<Index>, std::vector<Index>>> additions;
-    const auto add_to_rows = [&](const std::vector<Index> &rows,
-                                 std::vector<Index>        columns) {
-      std::sort(columns.begin(), columns.end());
-      columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
-      additions.emplace_back(rows, std::move(columns));
+    const auto sorted = [](std::vector<Index> v) {
+      std::sort(v.begin(), v.end());
+      v.erase(std::unique(v.begin(), v.end()), v.end());
+      return v;
     };
+    // the condensation substitutes once, with the Jacobian's own rows:
+    // the fill comes from the pattern without any of it (adding it group
+    // by group would spread it along the surface)
+    std::vector<FillIn> additions;
     for (const auto &group : groups)
       {
         // dlambda = -e - F du with F = E J_s, the group's displacement rows
@@ -520,20 +518,29 @@ namespace ContactDynamics
         // a row with a multiplier column (by the pattern's symmetry, a
         // column of the multiplier's row) gets the columns of F; the
         // group's own rows take the multiplier rows and Q_2^T J_s
-        add_to_rows(multiplier_columns, displacement_columns);
         std::vector<Index> own = displacement_columns;
         own.insert(own.end(),
                    multiplier_columns.begin(),
                    multiplier_columns.end());
-        add_to_rows(group.displacements, own);
+        additions.push_back(
+          {sorted(multiplier_columns), sorted(displacement_columns)});
+        additions.push_back({group.displacements, sorted(own)});
       }
-    for (const auto &addition : additions)
-      for (const Index r : addition.first)
+    return additions;
+  }
+
+  void
+  MultiplierCondensation::add_fill_in(
+    DynamicSparsityPattern             &dsp,
+    const std::vector<MultiplierGroup> &groups)
+  {
+    for (const auto &addition : fill_in(dsp, groups))
+      for (const Index r : addition.rows)
         if (dsp.row_index_set().size() == 0 ||
             dsp.row_index_set().is_element(r))
           dsp.add_entries(r,
-                          addition.second.begin(),
-                          addition.second.end(),
+                          addition.columns.begin(),
+                          addition.columns.end(),
                           true);
   }
 

@@ -14,6 +14,7 @@
 #ifndef contact_dynamics_contact_clipping_geometry_h
 #define contact_dynamics_contact_clipping_geometry_h
 
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/tensor.h>
 
 #include <contact_dynamics/contact/mortar_geometry.h>
@@ -205,7 +206,11 @@ namespace ContactDynamics
 
     /**
      * The part of the polygon `subject` inside the convex counterclockwise
-     * polygon `clip` (Sutherland-Hodgman, one clip edge at a time). A point
+     * polygon `clip` (Sutherland-Hodgman, one clip edge at a time; the clip
+     * polygon must be convex: the projection of a valid bilinear face onto
+     * its own plane is, since a non-convex quadrilateral has a Jacobian
+     * that changes sign). Edges of `clip` shorter than the tolerance are
+     * skipped. A point
      * within `tolerance` (a length) of a clip edge counts as on it, and
      * points closer than `tolerance` merge: a shared edge, a vertex on an
      * edge and coincident vertices give no slivers or duplicate vertices.
@@ -224,6 +229,9 @@ namespace ContactDynamics
           const Number          ex = c1[0] - c0[0], ey = c1[1] - c0[1];
           using std::sqrt;
           const Number length = sqrt(ex * ex + ey * ey);
+          // a degenerate edge bounds nothing (and its normal is undefined)
+          if (value_of(length) <= tolerance)
+            continue;
           // signed distance, positive inside (to the left of the edge)
           const auto distance = [&](const Point2<Number> &p) -> Number {
             return (ex * (p[1] - c0[1]) - ey * (p[0] - c0[0])) / length;
@@ -514,8 +522,8 @@ namespace ContactDynamics
      * along the plane's normal (Popp, Gee and Wall 2009: the integration
      * cells live in the plane; exact for flat secondary faces).
      * `tolerance` is relative to the secondary face's diameter. False if
-     * the faces do not overlap (or a projection fails; then nothing is
-     * appended).
+     * the faces do not overlap; throws if a point of the overlap cannot be
+     * projected onto its faces (then nothing is appended).
      */
     template <typename Number>
     bool
@@ -564,19 +572,26 @@ namespace ContactDynamics
                        b[2] * triangle[2][c];
               const Vec3<Number> p = plane.point(q);
               double             s[3], m[3];
-              if (!project_along_direction(xs_d,
-                                           to_double(p),
-                                           normal_d,
-                                           s[0],
-                                           s[1],
-                                           s[2]) ||
-                  !project_along_direction(xm_d,
-                                           to_double(p),
-                                           normal_d,
-                                           m[0],
-                                           m[1],
-                                           m[2]))
-                return false;
+              // a point of the clip polygon lies on both projected faces:
+              // not finding it on either is a geometry failure, not a
+              // missing overlap
+              AssertThrow(
+                project_along_direction(xs_d,
+                                        to_double(p),
+                                        normal_d,
+                                        s[0],
+                                        s[1],
+                                        s[2]) &&
+                  project_along_direction(xm_d,
+                                          to_double(p),
+                                          normal_d,
+                                          m[0],
+                                          m[1],
+                                          m[2]),
+                dealii::ExcMessage(
+                  "3-D mortar: a point of a mortar segment could not be "
+                  "projected onto its faces (faces nearly parallel to the "
+                  "auxiliary plane's normal, or badly distorted)."));
               const auto ps =
                 projection_with_derivatives(xs, p, normal, s[0], s[1], s[2]);
               const auto pm =

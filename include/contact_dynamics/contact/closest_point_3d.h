@@ -41,8 +41,9 @@ namespace ContactDynamics
     /**
      * The closest point of the face x to p by Newton from the face's
      * center. False if Newton does not converge (the closest point may
-     * then lie far outside the face); the parameters may lie outside
-     * [0,1]^2 (the caller decides which face a node belongs to).
+     * then lie far outside the face) or converges to a stationary point
+     * that is not a minimum of the distance; the parameters may lie
+     * outside [0,1]^2 (the caller decides which face a node belongs to).
      */
     inline bool
     closest_point(const std::array<Vec3<double>, 4> &x,
@@ -65,9 +66,11 @@ namespace ContactDynamics
           eta += deta;
           if (std::abs(xi) > 1e3 || std::abs(eta) > 1e3)
             return false;
+          // a minimum of the distance, not a saddle or a maximum: the
+          // Hessian J positive definite
           if (std::abs(dxi) + std::abs(deta) <
               1e-14 * (1 + std::abs(xi) + std::abs(eta)))
-            return true;
+            return J[0][0] > 0 && det > 0;
         }
       return false;
     }

@@ -80,7 +80,7 @@ namespace ContactDynamics
       for (unsigned int v = 1; v < nodes_per_face; ++v)
         box.merge_with(BoundingBox<dim>(std::make_pair(x[v], x[v])));
       length = x[0].distance(x[nodes_per_face - 1]);
-      if (dim == 3)
+      if constexpr (dim == 3)
         length = std::max(length, x[1].distance(x[2]));
       return box;
     }

@@ -74,6 +74,22 @@ namespace ContactDynamics
     add_fill_in(DynamicSparsityPattern             &dsp,
                 const std::vector<MultiplierGroup> &groups);
 
+    /** Rows and the columns the condensation fills into each of them. */
+    struct FillIn
+    {
+      std::vector<types::global_dof_index> rows, columns;
+    };
+
+    /**
+     * The fill-in of add_fill_in() as a list, read from `pattern`, whose
+     * rows of the groups' displacements and multipliers must be complete
+     * (with several processes: the pattern after it was distributed to
+     * the owners of its rows). The rows it fills may be owned elsewhere.
+     */
+    static std::vector<FillIn>
+    fill_in(const DynamicSparsityPattern       &pattern,
+            const std::vector<MultiplierGroup> &groups);
+
     const TrilinosWrappers::SparseMatrix &
     matrix() const;
 
