@@ -43,7 +43,12 @@ namespace ContactDynamics
     const NodeToSegmentParameters &parameters)
     : SurfaceContact<dim>(contact, parameters.complementarity)
     , smoothing_distance(parameters.smoothing_distance)
-  {}
+  {
+    AssertThrow(dim == 2,
+                ExcMessage("Contact/Formulation = node to segment is "
+                           "implemented in 2-D only so far; in 3-D use "
+                           "Contact/Formulation = mortar."));
+  }
 
   namespace
   {

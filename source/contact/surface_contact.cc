@@ -3,6 +3,7 @@
 
 #include <deal.II/dofs/dof_tools.h>
 
+#include <contact_dynamics/contact/closest_point_3d.h>
 #include <contact_dynamics/contact/contact_search.h>
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/parallel.h>
@@ -80,6 +81,72 @@ namespace ContactDynamics
               return true;
           }
       return false;
+    }
+
+    // "(x, y)" or "(x, y, z)"
+    template <int dim>
+    std::string
+    coordinates(const Point<dim> &x)
+    {
+      std::ostringstream out;
+      out << '(';
+      for (unsigned int d = 0; d < dim; ++d)
+        out << (d > 0 ? ", " : "") << x[d];
+      out << ')';
+      return out.str();
+    }
+
+    std::array<ClippingGeometry::Vec3<double>, 4>
+    face_nodes(const ContactSurface<3> &surface,
+               const unsigned int       face,
+               const VectorType        &u)
+    {
+      std::array<ClippingGeometry::Vec3<double>, 4> x;
+      for (unsigned int a = 0; a < 4; ++a)
+        x[a] = surface.position(surface.faces[face][a], u);
+      return x;
+    }
+
+    Point<3>
+    face_center(const ContactSurface<3> &surface,
+                const unsigned int       face,
+                const VectorType        &u)
+    {
+      return Point<3>(
+        ClippingGeometry::interpolate(face_nodes(surface, face, u), 0.5, 0.5));
+    }
+
+    // 3-D: how far the point x1 (x0 at the last step) lies behind the
+    // bilinear face at the state u (committed_u), if it projects onto the
+    // face at both states and was in front of it before; else 0. (The
+    // states at the ends of the step, not the swept path of 2-D.)
+    double
+    depth_behind_face(const ContactSurface<3> &surface,
+                      const unsigned int       face,
+                      const Point<3>          &x0,
+                      const Point<3>          &x1,
+                      const VectorType        &committed_u,
+                      const VectorType        &u)
+    {
+      using namespace ClippingGeometry;
+      double signed_distance[2];
+      for (unsigned int k = 0; k < 2; ++k)
+        {
+          const auto   x = face_nodes(surface, face, k == 0 ? committed_u : u);
+          const auto  &p = k == 0 ? x0 : x1;
+          double       xi, eta;
+          const double margin = 1e-10;
+          if (!closest_point(x, p, xi, eta) || xi < -margin || eta < -margin ||
+              xi > 1 + margin || eta > 1 + margin)
+            return 0;
+          const auto   t = tangents(x, xi, eta);
+          Vec3<double> n = ClippingGeometry::cross(t[0], t[1]);
+          n /= norm(n);
+          signed_distance[k] = (p - interpolate(x, xi, eta)) * n;
+        }
+      return signed_distance[0] >= 0 && signed_distance[1] < 0 ?
+               -signed_distance[1] :
+               0.;
     }
   } // namespace
 
@@ -172,11 +239,7 @@ namespace ContactDynamics
     const ComplementarityParameters &complementarity)
     : contact(contact)
     , complementarity(complementarity)
-  {
-    AssertThrow(dim == 2,
-                ExcMessage("Contact is implemented in 2-D only; set "
-                           "Dimension = 2 or Contact/Formulation = none."));
-  }
+  {}
 
   template <int dim>
   std::vector<std::string>
@@ -217,6 +280,13 @@ namespace ContactDynamics
                                "' has an empty surface."));
         pair.nodes.assign(pair.secondary.n_nodes(), NodeState());
         pair.friction_coefficient = contact.pairs[p].friction_coefficient;
+        AssertThrow(dim == 2 || pair.friction_coefficient == 0,
+                    ExcMessage(
+                      "The contact pair '" + contact.pairs[p].name +
+                      "' has a friction coefficient of " +
+                      std::to_string(pair.friction_coefficient) +
+                      ": friction is implemented in 2-D only so far; in "
+                      "3-D the coefficient must be 0 (frictionless)."));
         for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
           {
             secondary_normal.insert(pair.secondary.dofs[j][dim]);
@@ -652,7 +722,7 @@ namespace ContactDynamics
     work.start_assembly();
     n_stick = n_slip = 0;
     n_active         = 0;
-    total_force[0] = total_force[1] = 0;
+    std::fill(std::begin(total_force), std::end(total_force), 0.);
     const LinearSystem system{constraints,
                               with_jacobian,
                               residual,
@@ -718,24 +788,20 @@ namespace ContactDynamics
 
     for (const auto &pair : pairs)
       for (const auto &node_dofs : pair.secondary.dofs)
-        for (unsigned int d = 0; d < 2; ++d)
+        for (unsigned int d = 0; d < dim; ++d)
           if (owned_dofs.is_element(node_dofs[d]))
             total_force[d] -= force(node_dofs[d]);
     if (Utilities::MPI::n_mpi_processes(comm) > 1)
       {
-        double sums[5] = {total_force[0],
-                          total_force[1],
-                          double(n_active),
-                          double(n_stick),
-                          double(n_slip)};
-        Utilities::MPI::sum(ArrayView<const double>(sums, 5),
-                            comm,
-                            ArrayView<double>(sums, 5));
-        total_force[0] = sums[0];
-        total_force[1] = sums[1];
-        n_active       = std::lround(sums[2]);
-        n_stick        = std::lround(sums[3]);
-        n_slip         = std::lround(sums[4]);
+        std::vector<double> sums(std::begin(total_force),
+                                 std::end(total_force));
+        sums.insert(sums.end(),
+                    {double(n_active), double(n_stick), double(n_slip)});
+        Utilities::MPI::sum(sums, comm, sums);
+        std::copy(sums.begin(), sums.begin() + dim, std::begin(total_force));
+        n_active = std::lround(sums[dim]);
+        n_stick  = std::lround(sums[dim + 1]);
+        n_slip   = std::lround(sums[dim + 2]);
         gather_node_states();
       }
   }
@@ -846,10 +912,10 @@ namespace ContactDynamics
             const Point<dim> x1    = s.position(j, u);
             const auto       where = [&]() -> std::ostream       &{
               return failure << "contact pair '" << contact.pairs[p].name
-                             << "': the secondary node at (" << x1[0] << ", "
-                             << x1[1] << ") (reference (" << s.reference[j][0]
-                             << ", " << s.reference[j][1] << "), at (" << x0[0]
-                             << ", " << x0[1] << ") at the last step) ";
+                             << "': the secondary node at " << coordinates(x1)
+                             << " (reference " << coordinates(s.reference[j])
+                             << ", at " << coordinates(x0)
+                             << " at the last step) ";
             };
             // a held (persistent) node may sink by dt/2 times the approach
             // rate it had, but not by half the depth of the primary elements
@@ -860,8 +926,10 @@ namespace ContactDynamics
               element_depth = std::min(element_depth, f.depth[e]);
             const double own_depth =
               std::max(complementarity.capture_tolerance,
-                       node.persistent ? 0.5 * element_depth :
-                                         1e-2 * 2 * s.reference_weight[j]);
+                       node.persistent ?
+                         0.5 * element_depth :
+                         1e-2 * 2 *
+                           std::pow(s.reference_weight[j], 1. / (dim - 1)));
             if (node.projected && node.normalized_gap() < -own_depth)
               {
                 where()
@@ -879,6 +947,23 @@ namespace ContactDynamics
             // above)
             if (node.active || node.persistent)
               continue;
+            if constexpr (dim == 3)
+              {
+                for (const unsigned int e : faces[j])
+                  if (const double depth =
+                        depth_behind_face(f, e, x0, x1, committed_u, u);
+                      depth > std::max(complementarity.capture_tolerance,
+                                       1e-2 * f.depth[e]))
+                    {
+                      where() << "went through the primary face with center "
+                              << coordinates(face_center(f, e, u))
+                              << " in this step and ends " << depth
+                              << " behind it, but its contact condition is "
+                                 "not active";
+                      break;
+                    }
+                continue;
+              }
             for (const unsigned int e : faces[j])
               {
                 const unsigned int a = f.faces[e][0], b = f.faces[e][1];
@@ -922,8 +1007,10 @@ namespace ContactDynamics
   {
     std::vector<std::string> columns{"active_contact_nodes",
                                      "contact_force_x",
-                                     "contact_force_y",
-                                     "contact_work"};
+                                     "contact_force_y"};
+    if (dim == 3)
+      columns.emplace_back("contact_force_z");
+    columns.emplace_back("contact_work");
     if (friction)
       for (const char *c :
            {"stick_nodes", "slip_nodes", "frictional_dissipation"})
@@ -935,10 +1022,9 @@ namespace ContactDynamics
   std::vector<double>
   SurfaceContact<dim>::statistics() const
   {
-    std::vector<double> values{double(n_active),
-                               total_force[0],
-                               total_force[1],
-                               work.work()};
+    std::vector<double> values{double(n_active)};
+    values.insert(values.end(), std::begin(total_force), std::end(total_force));
+    values.push_back(work.work());
     if (friction)
       for (const double v :
            {double(n_stick), double(n_slip), work.dissipation()})
@@ -964,10 +1050,9 @@ namespace ContactDynamics
       return;
     std::ostringstream where;
     where << "The bodies overlap at t = 0 by up to " << worst << " (pair '"
-          << contact.pairs[pair].name << "', secondary node at ("
-          << pairs[pair].secondary.reference[node][0] << ", "
-          << pairs[pair].secondary.reference[node][1]
-          << ") in the reference configuration; Capture tolerance = "
+          << contact.pairs[pair].name << "', secondary node at "
+          << coordinates(pairs[pair].secondary.reference[node])
+          << " in the reference configuration; Capture tolerance = "
           << complementarity.capture_tolerance << ")";
     AssertThrow(contact.allow_initial_penetration,
                 ExcMessage(where.str() +

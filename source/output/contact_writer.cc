@@ -101,7 +101,8 @@ namespace ContactDynamics
   ContactWriter<dim>::write_surfaces(const ContactFormulation<dim> &contact,
                                      std::ostream                  &out) const
   {
-    out << "pair,node,x,y,gap,pressure,active,tangential_traction,stick\n";
+    out << "pair,node,x,y," << (dim == 3 ? "z," : "")
+        << "gap,pressure,active,tangential_traction,stick\n";
     for (unsigned int p = 0; p < contact.n_pairs(); ++p)
       {
         const SecondaryNodes<dim> nodes = contact.secondary_nodes(p);
@@ -111,16 +112,21 @@ namespace ContactDynamics
         for (unsigned int j = 0; j < order.size(); ++j)
           order[j] = j;
         std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
-          return X[a][0] < X[b][0] || (X[a][0] == X[b][0] && X[a][1] < X[b][1]);
+          for (unsigned int d = 0; d < dim; ++d)
+            if (X[a][d] != X[b][d])
+              return X[a][d] < X[b][d];
+          return false;
         });
         for (const unsigned int j : order)
           {
             const ContactNodeState &node = nodes.states[j];
             const auto             &x    = nodes.position[j];
-            out << p << ',' << j << ',' << std::setprecision(10) << x[0] << ','
-                << x[1] << ',' << node.normalized_gap() << ',' << node.pressure
-                << ',' << node.active << ',' << node.tangential << ','
-                << node.stick << '\n';
+            out << p << ',' << j << ',' << std::setprecision(10);
+            for (unsigned int d = 0; d < dim; ++d)
+              out << x[d] << ',';
+            out << node.normalized_gap() << ',' << node.pressure << ','
+                << node.active << ',' << node.tangential << ',' << node.stick
+                << '\n';
           }
       }
   }

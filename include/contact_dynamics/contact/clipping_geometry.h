@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 namespace ContactDynamics
@@ -301,30 +302,17 @@ namespace ContactDynamics
       return triangles;
     }
 
+    /** Barycentric coordinates and weights (summing to 1) on a triangle. */
+    using TriangleRule = std::vector<std::pair<std::array<double, 3>, double>>;
+
     /**
-     * The symmetric 6-point Gauss rule on a triangle (Dunavant), exact for
-     * polynomials of degree 4: barycentric coordinates and weights summing
-     * to 1 (multiply by the triangle's area).
+     * The Witherden-Vincent rule on a triangle with n_points_1d "points per
+     * direction" (1 to 7; 1, 6, 7, 15, 19, 28, 37 points), exact for
+     * polynomials of degree 2 n_points_1d - 1 (the 6-point rule of 2 is
+     * Dunavant's, of degree 4). Multiply the weights by the triangle's area.
      */
-    inline const std::vector<std::pair<std::array<double, 3>, double>> &
-    triangle_rule()
-    {
-      static const std::vector<std::pair<std::array<double, 3>, double>> rule =
-        [] {
-          std::vector<std::pair<std::array<double, 3>, double>> r;
-          const double a1 = 0.445948490915965, w1 = 0.223381589678011;
-          const double a2 = 0.091576213509771, w2 = 0.109951743655322;
-          for (const auto &[a, w] : {std::pair{a1, w1}, std::pair{a2, w2}})
-            {
-              const double b = 1. - 2. * a;
-              r.push_back({{{b, a, a}}, w});
-              r.push_back({{{a, b, a}}, w});
-              r.push_back({{{a, a, b}}, w});
-            }
-          return r;
-        }();
-      return rule;
-    }
+    const TriangleRule &
+    triangle_rule(const unsigned int n_points_1d = 2);
 
     /**
      * The parameters (xi, eta) of the face x and the distance alpha along
@@ -365,10 +353,35 @@ namespace ContactDynamics
       return false;
     }
 
+    /** 0 for double, 1 for a Fad of doubles, 2 for a Fad of Fads, ... */
+    template <typename Number>
+    constexpr unsigned int
+    derivative_order()
+    {
+      if constexpr (std::is_arithmetic_v<Number>)
+        return 0;
+      else
+        return 1 + derivative_order<typename Number::value_type>();
+    }
+
     /**
-     * The same projection with derivatives: from the converged values, one
-     * Newton step in the number type gives the exact first derivatives
-     * (implicit function theorem) and leaves the values unchanged.
+     * Newton steps in the number type, from a converged value, that give
+     * exact derivatives up to the number's order: the error of the
+     * derivatives' Taylor expansion squares with every step (one step is
+     * exact to first order, two to third).
+     */
+    template <typename Number>
+    constexpr unsigned int
+    exact_newton_steps()
+    {
+      return derivative_order<Number>() <= 1 ? 1 : 2;
+    }
+
+    /**
+     * The same projection with derivatives: from the converged values,
+     * exact_newton_steps() Newton steps in the number type give the exact
+     * derivatives (implicit function theorem) and leave the values
+     * unchanged.
      */
     template <typename Number>
     std::array<Number, 3>
@@ -379,14 +392,18 @@ namespace ContactDynamics
                                 const double                       eta,
                                 const double                       alpha)
     {
-      const Number       xi_n = xi, eta_n = eta, alpha_n = alpha;
-      const Vec3<Number> r   = interpolate(x, xi_n, eta_n) - p - alpha_n * n;
-      const auto         t   = tangents(x, xi_n, eta_n);
-      const Vec3<Number> m   = -n;
-      const Number       det = cross(t[0], t[1]) * m;
-      return {{xi_n - (cross(r, t[1]) * m) / det,
-               eta_n - (cross(t[0], r) * m) / det,
-               alpha_n - (cross(t[0], t[1]) * r) / det}};
+      std::array<Number, 3> y{{Number(xi), Number(eta), Number(alpha)}};
+      const Vec3<Number>    m = -n;
+      for (unsigned int step = 0; step < exact_newton_steps<Number>(); ++step)
+        {
+          const Vec3<Number> r   = interpolate(x, y[0], y[1]) - p - y[2] * n;
+          const auto         t   = tangents(x, y[0], y[1]);
+          const Number       det = cross(t[0], t[1]) * m;
+          y                      = {{y[0] - (cross(r, t[1]) * m) / det,
+                                     y[1] - (cross(t[0], r) * m) / det,
+                                     y[2] - (cross(t[0], t[1]) * r) / det}};
+        }
+      return y;
     }
 
     /** A quadrature point in a face's reference square, weight with area. */
@@ -531,7 +548,8 @@ namespace ContactDynamics
                    const std::array<Vec3<Number>, 4> &ns,
                    const std::array<Vec3<Number>, 4> &xm,
                    const double                       tolerance,
-                   std::vector<SegmentPoint<Number>> &points)
+                   std::vector<SegmentPoint<Number>> &points,
+                   const TriangleRule                &rule = triangle_rule())
     {
       const Number       half   = 0.5;
       const Vec3<Number> center = interpolate(xs, half, half);
@@ -564,7 +582,7 @@ namespace ContactDynamics
         {
           const Number area =
             signed_area(Polygon<Number>(triangle.begin(), triangle.end()));
-          for (const auto &[b, w] : triangle_rule())
+          for (const auto &[b, w] : rule)
             {
               Point2<Number> q;
               for (unsigned int c = 0; c < 2; ++c)

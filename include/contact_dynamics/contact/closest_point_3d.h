@@ -75,7 +75,7 @@ namespace ContactDynamics
       return false;
     }
 
-    /** The converged (xi, eta) with exact first derivatives. */
+    /** The converged (xi, eta) with exact derivatives (exact_newton_steps). */
     template <typename Number>
     std::array<Number, 2>
     closest_point_with_derivatives(const std::array<Vec3<Number>, 4> &x,
@@ -83,13 +83,17 @@ namespace ContactDynamics
                                    const double                       xi,
                                    const double                       eta)
     {
-      const Number                         xi_n = xi, eta_n = eta;
-      std::array<Number, 2>                r;
-      std::array<std::array<Number, 2>, 2> J;
-      closest_point_system(x, p, xi_n, eta_n, r, J);
-      const Number det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-      return {{xi_n - (J[1][1] * r[0] - J[0][1] * r[1]) / det,
-               eta_n - (J[0][0] * r[1] - J[1][0] * r[0]) / det}};
+      std::array<Number, 2> y{{Number(xi), Number(eta)}};
+      for (unsigned int step = 0; step < exact_newton_steps<Number>(); ++step)
+        {
+          std::array<Number, 2>                r;
+          std::array<std::array<Number, 2>, 2> J;
+          closest_point_system(x, p, y[0], y[1], r, J);
+          const Number det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+          y                = {{y[0] - (J[1][1] * r[0] - J[0][1] * r[1]) / det,
+                               y[1] - (J[0][0] * r[1] - J[1][0] * r[0]) / det}};
+        }
+      return y;
     }
   } // namespace ClippingGeometry
 } // namespace ContactDynamics

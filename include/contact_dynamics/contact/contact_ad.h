@@ -202,13 +202,15 @@ namespace ContactDynamics
         , state(state)
       {}
 
+      template <int n_components>
       void
-      add(const ContactSurface<dim> &surface,
-          const unsigned int         node,
-          Vec<Number>               &x,
-          Vec<Number>               &v)
+      add(const ContactSurface<dim>       &surface,
+          const unsigned int               node,
+          Tensor<1, n_components, Number> &x,
+          Tensor<1, n_components, Number> &v)
       {
-        for (unsigned int d = 0; d < 2; ++d, ++next)
+        static_assert(n_components <= dim);
+        for (unsigned int d = 0; d < n_components; ++d, ++next)
           {
             Assert(unknowns[next] == surface.dofs[node][d], ExcInternalError());
             x[d] = Number(unknowns.size(),

@@ -1,4 +1,4 @@
-// Dual mortar segment-to-segment contact with Lagrange multipliers (2-D):
+// Dual mortar segment-to-segment contact with Lagrange multipliers:
 // weighted gaps on mortar segments with dual basis functions, forces on
 // both sides through the same traction; see doc/contact.md.
 #ifndef contact_dynamics_contact_mortar_contact_h
@@ -65,7 +65,8 @@ namespace ContactDynamics
     std::vector<unsigned int>
     patch_nodes(const PairData &pair, const unsigned int patch) const override
     {
-      return {pair.secondary.faces[patch][0], pair.secondary.faces[patch][1]};
+      return {pair.secondary.faces[patch].begin(),
+              pair.secondary.faces[patch].end()};
     }
 
     std::vector<types::global_dof_index>
@@ -94,6 +95,23 @@ namespace ContactDynamics
 
     unsigned int quadrature_points;
   };
+
+  // 3-D (mortar_contact_3d.cc): a patch reads the secondary nodes of the
+  // faces around the face's nodes (their averaged normals), the primary
+  // nodes of the candidate faces and the face's normal multipliers
+  template <>
+  std::vector<types::global_dof_index>
+  MortarContact<3>::patch_unknowns(
+    const PairData                  &pair,
+    const unsigned int               patch,
+    const std::vector<unsigned int> &primary_faces) const;
+
+  template <>
+  void
+  MortarContact<3>::assemble_patch(PairData          &pair,
+                                   const unsigned int patch,
+                                   const TrialState  &state,
+                                   PatchForces       &forces);
 } // namespace ContactDynamics
 
 #endif

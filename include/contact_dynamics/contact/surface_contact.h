@@ -415,8 +415,8 @@ namespace ContactDynamics
     bool         friction = false;
     unsigned int n_stick = 0, n_slip = 0;
     VectorType   gap_field; // normalized gap at the multiplier dofs
-    unsigned int n_active       = 0;
-    double       total_force[2] = {0, 0};
+    unsigned int n_active         = 0;
+    double       total_force[dim] = {};
   };
 } // namespace ContactDynamics
 

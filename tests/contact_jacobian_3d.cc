@@ -1,0 +1,222 @@
+// 3-D dual mortar: the contact rows of the Jacobian (automatic
+// differentiation through the averaged nodal normals, the auxiliary plane,
+// the clip polygons and the projections) against central finite
+// differences of the residual, on a curved, warped interface between the
+// distorted, non-matching meshes of the 3-D patch-test scene: the upper
+// block's bottom bent into a paraboloid, the lower block's top twisted,
+// every node perturbed at random; quasi-static (the weighted gaps) and
+// after one dynamic step (the persistency rows of held nodes). The
+// 'approximate' Jacobian, which drops the geometric stiffness, must differ.
+// Momentum: the contact forces on both bodies sum to zero, and so do their
+// moments (the normalized gaps are invariant under rigid motions), to
+// round-off.
+#include <contact_dynamics/contact/surface_contact.h>
+#include <contact_dynamics/simulator.h>
+
+#include "tests.h"
+
+#include <random>
+
+using namespace dealii;
+using ContactDynamics::VectorType;
+
+namespace
+{
+  std::string
+  parameters(const std::string &scheme, const std::string &jacobian)
+  {
+    // dynamic: the upper block hits the lower one from a small gap, so
+    // that the nodes the first step brings into contact hold their gaps
+    // after it
+    const bool        dynamic = scheme != "quasi-static";
+    const std::string offset  = dynamic ? "0.0002" : "-0.003";
+    return R"(
+set Dimension = 3
+subsection Scene
+  set Scene = patch test
+  set Refinement factor = 0.6
+end
+subsection Body upper
+  set Young's modulus = 1000
+  set Poisson's ratio = 0.3
+  set Density = 1
+  set Initial displacement = 0.001*x; )" +
+           offset + R"( + 0.02*((x-0.5)^2 + (z-0.5)^2) + 0.004*x*z; 0.002*z
+  set Initial velocity = 0; )" +
+           (dynamic ? "-1" : "0") + R"(; 0
+end
+subsection Body lower
+  set Young's modulus = 1000
+  set Poisson's ratio = 0.3
+  set Density = 1
+  set Initial displacement = 0; 0.004*x*z - 0.002*z; 0
+end
+subsection Boundary conditions
+  set Dirichlet = lower_bottom: xyz: 0
+end
+subsection Time integration
+  set Scheme = )" +
+           scheme + R"(
+  set Time step = 0.01
+end
+subsection Contact
+  set Formulation = mortar
+  set Pairs = upper_bottom: lower_top
+  set Initial penetration = allow
+  subsection Mortar
+    set c_n = 1e4
+    set Jacobian = )" +
+           jacobian + R"(
+  end
+end
+subsection Output
+  set Output directory = output_jacobian_3d
+  set VTU interval = 0
+end
+)";
+  }
+
+  void
+  check(const std::string &name,
+        const std::string &scheme,
+        const std::string &jacobian,
+        const bool         held)
+  {
+    ParameterHandler prm;
+    read_test_parameters("jacobian_3d.prm", parameters(scheme, jacobian), prm);
+    std::ostringstream            screen;
+    ContactDynamics::Simulator<3> simulator(prm, screen);
+    simulator.initialize();
+    if (held)
+      check_true(name + ": first step converges", simulator.advance(0.01));
+    const auto &constraints = simulator.get_constraints();
+    const auto &normal      = simulator.get_contact()->multiplier_dofs();
+    const std::set<types::global_dof_index> lambda(normal.begin(),
+                                                   normal.end());
+
+    std::mt19937                           rng(5);
+    std::uniform_real_distribution<double> uniform(-1., 1.);
+    VectorType trial(simulator.displacement()), direction(trial), mask(trial);
+    mask = 0.;
+    for (unsigned int i = 0; i < trial.size(); ++i)
+      if (lambda.count(i))
+        {
+          trial(i)     = 20 * (1.5 + uniform(rng));
+          direction(i) = 10 * uniform(rng);
+          mask(i)      = 1. + uniform(rng);
+        }
+      else
+        {
+          trial(i) += 1e-4 * uniform(rng);
+          direction(i) = 1e-3 * uniform(rng);
+        }
+    constraints.set_zero(direction);
+
+    VectorType r_plus(trial), r_minus(trial), r(trial), jd(trial), jm(trial);
+    // (round-off dominates the differences below: 1e-7 gives 1e-6)
+    const double h = 1e-6;
+    VectorType   shifted(trial);
+    shifted.add(h, direction);
+    simulator.residual_and_jacobian(shifted, 0.01, r_plus);
+    shifted.add(-2 * h, direction);
+    simulator.residual_and_jacobian(shifted, 0.01, r_minus);
+    const auto &J = simulator.residual_and_jacobian(trial, 0.01, r);
+    J.vmult(jd, direction);
+    J.vmult(jm, mask);
+    r_plus -= r_minus;
+    r_plus /= 2 * h;
+    double       error[2] = {0, 0}, norm[2] = {0, 0};
+    unsigned int n_rows[2] = {0, 0};
+    for (unsigned int i = 0; i < trial.size(); ++i)
+      {
+        const int group = lambda.count(i) ? 0 : (jm(i) != 0 ? 1 : -1);
+        if (group < 0 || constraints.is_constrained(i))
+          continue;
+        ++n_rows[group];
+        error[group] += std::pow(r_plus(i) - jd(i), 2);
+        norm[group] += std::pow(jd(i), 2);
+      }
+    const auto *contact =
+      dynamic_cast<const ContactDynamics::SurfaceContact<3> *>(
+        simulator.get_contact());
+    unsigned int n_active = 0, n_held = 0;
+    for (const auto &node : contact->node_states(0))
+      {
+        n_active += node.active;
+        n_held += node.active && node.persistent;
+      }
+
+    deallog << name << ": multiplier rows " << n_rows[0] << ", force rows "
+            << n_rows[1] << ", active nodes " << n_active << std::endl;
+    check_true(name + ": some nodes active, some not",
+               n_active > 3 && n_active < contact->node_states(0).size());
+    if (held)
+      check_true(name + ": held nodes in the checked state", n_held >= 3);
+    const double multiplier_error = std::sqrt(error[0] / norm[0]);
+    const double force_error      = std::sqrt(error[1] / norm[1]);
+    if (jacobian == "exact")
+      {
+        check_close(name + ": multiplier rows |J d - FD| / |J d|",
+                    multiplier_error,
+                    0.,
+                    1e-6);
+        check_close(name + ": force rows |J d - FD| / |J d|",
+                    force_error,
+                    0.,
+                    1e-6);
+      }
+    else
+      check_true(name + ": force rows differ from FD by more than 1e-3",
+                 force_error > 1e-3);
+
+    if (held || jacobian != "exact")
+      return;
+    // momentum: the contact forces alone are the residual with the
+    // multipliers minus the residual without them (the bulk terms cancel);
+    // no surface node is held by a Dirichlet condition here
+    VectorType without(trial), r0(trial);
+    for (const auto i : lambda)
+      without(i) = 0;
+    simulator.residual_and_jacobian(without, 0.01, r0);
+    r -= r0;
+    Tensor<1, 3>      force, moment, one_side;
+    std::vector<bool> seen(trial.size(), false);
+    for (const auto &cell : simulator.get_dof_handler().active_cell_iterators())
+      for (const auto v : cell->vertex_indices())
+        {
+          if (seen[cell->vertex_dof_index(v, 0)])
+            continue;
+          seen[cell->vertex_dof_index(v, 0)] = true;
+          Tensor<1, 3> f;
+          Point<3>     x = cell->vertex(v);
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              f[d] = r(cell->vertex_dof_index(v, d));
+              x[d] += trial(cell->vertex_dof_index(v, d));
+            }
+          force += f;
+          moment += cross_product_3d(x, f);
+          if (cell->material_id() == 0)
+            one_side += f;
+        }
+    deallog << name << ": contact force on the upper body " << one_side.norm()
+            << std::endl;
+    check_close(name + ": |sum of contact forces| / |force on one body|",
+                force.norm() / one_side.norm(),
+                0.,
+                1e-10);
+    check_close(name + ": |sum of contact moments| / |force on one body|",
+                moment.norm() / one_side.norm(),
+                0.,
+                1e-10);
+  }
+} // namespace
+
+int
+main()
+{
+  initlog();
+  check("quasi-static, exact", "quasi-static", "exact", false);
+  check("quasi-static, approximate", "quasi-static", "approximate", false);
+  check("held (persistency), exact", "newmark", "exact", true);
+}

@@ -1,0 +1,130 @@
+// 3-D contact patch test: two stacked unit blocks whose meshes neither
+// match nor align at the interface (7 x 6 against 5 x 4 faces, both grids
+// distorted differently in the horizontal plane), nu = 0, the lower block
+// clamped at its bottom, the upper one pressed down by delta = 1e-3 at its
+// top and held sideways on one side each in x and z (frictionless and
+// quasi-static, nothing else fixes its rigid sliding). The exact solution
+// is a uniform stress -E delta / H (H = 1): the contact pressure is
+// E delta = 1000 everywhere. Dual mortar with segment clipping reproduces
+// it up to the error of the triangle rule on the integration cells: the
+// parameters of a face are not polynomial in the auxiliary plane where its
+// quadrilateral is not a parallelogram, so the default 6-point rule leaves
+// about 2e-8 and the 15-point rule (Segment quadrature points = 4) 1e-10.
+// The contact force balances the reactions. (The approximate Jacobian
+// keeps the test fast; the exact one is checked in contact_jacobian_3d.)
+#include <contact_dynamics/contact/surface_contact.h>
+#include <contact_dynamics/simulator.h>
+
+#include "tests.h"
+
+using namespace dealii;
+
+// the largest relative pressure error with the given triangle rule
+double
+run(const unsigned int n_points_1d)
+{
+  ParameterHandler prm;
+  read_test_parameters("patch_3d.prm",
+                       std::string(R"(
+set Dimension = 3
+subsection Scene
+  set Scene = patch test
+end
+subsection Body upper
+  set Young's modulus = 1e6
+  set Poisson's ratio = 0
+end
+subsection Body lower
+  set Young's modulus = 1e6
+  set Poisson's ratio = 0
+end
+subsection Boundary conditions
+  set Dirichlet = lower_bottom: xyz: 0; upper_top: y: -1e-3*t; upper_left: x: 0; upper_front: z: 0
+end
+subsection Time integration
+  set Scheme = quasi-static
+  set Time step = 1
+  set End time = 1
+end
+subsection Nonlinear solver
+  set Absolute tolerance = 1e-11
+end
+subsection Contact
+  set Formulation = mortar
+  set Pairs = upper_bottom: lower_top
+  subsection Mortar
+    set c_n = 1e6
+    set Jacobian = approximate
+    set Segment quadrature points = )" +
+                                   std::to_string(n_points_1d) + R"(
+  end
+end
+subsection Output
+  set Output directory = output_patch_3d
+  set VTU interval = 0
+end
+)"),
+                       prm);
+  std::ostringstream            screen;
+  ContactDynamics::Simulator<3> simulator(prm, screen);
+  simulator.run();
+
+  const auto *contact =
+    dynamic_cast<const ContactDynamics::SurfaceContact<3> *>(
+      simulator.get_contact());
+  const double exact = 1000;
+  double       worst = 0, worst_gap = 0;
+  unsigned int n_active = 0;
+  for (const auto &node : contact->node_states(0))
+    {
+      worst = std::max(worst, std::abs(node.pressure - exact));
+      if (node.active)
+        {
+          ++n_active;
+          worst_gap = std::max(worst_gap, std::abs(node.normalized_gap()));
+        }
+    }
+  const auto stats = contact_statistics(*contact);
+  deallog.push("rule " + std::to_string(n_points_1d));
+  const auto top    = simulator.reaction_force("upper_top");
+  const auto bottom = simulator.reaction_force("lower_bottom");
+  deallog << "secondary nodes " << contact->node_states(0).size() << ", active "
+          << n_active << std::endl;
+  check_close("contact force on the upper block + reaction at its top",
+              (stats.at("contact_force_y") + top[1]) / exact,
+              0.,
+              1e-9);
+  check_close("reactions at top and bottom cancel",
+              (top[1] + bottom[1]) / exact,
+              0.,
+              1e-9);
+  check_close("tangential contact force x",
+              stats.at("contact_force_x") / exact,
+              0.,
+              1e-9);
+  check_close("tangential contact force z",
+              stats.at("contact_force_z") / exact,
+              0.,
+              1e-9);
+  check_close("gap at active nodes / delta", worst_gap / 1e-3, 0., 1e-9);
+  check_close("total load / (E delta area)", -top[1] / exact, 1., 1e-9);
+  deallog.pop();
+  return worst / exact;
+}
+
+int
+main()
+{
+  initlog();
+  const double error_15 = run(4);
+  check_close("15-point rule: max |pressure - E delta| / (E delta)",
+              error_15,
+              0.,
+              1e-8);
+  const double error_6 = run(2);
+  check_true("6-point rule: the rule's error, between 1e-10 and 1e-7",
+             error_6 > 1e-10 && error_6 < 1e-7);
+  deallog << std::setprecision(2)
+          << "measured relative pressure errors: 6-point rule " << error_6
+          << ", 15-point rule " << error_15 << std::endl;
+}
