@@ -414,30 +414,13 @@ namespace ContactDynamics
     };
 
     /**
-     * Coefficients a_jk of the dual basis psi_j = sum_k a_jk N_k of a face,
-     * biorthogonal to N on what the points integrate: A = D M^-1 with
-     * D_jj = sum w N_j and M_jk = sum w N_j N_k (the whole face, or its
-     * covered part, as in the 2-D dual_coefficients). Sum_j psi_j = 1.
+     * A = D M^-1 from D_jj = integral N_j and M_jk = integral N_j N_k.
      */
     template <typename Number>
     std::array<std::array<Number, 4>, 4>
-    dual_coefficients(const std::vector<FacePoint<Number>> &points)
+    dual_from_moments(const std::array<Number, 4>         &D,
+                      std::array<std::array<Number, 4>, 4> M)
     {
-      std::array<Number, 4>                D{};
-      std::array<std::array<Number, 4>, 4> M{};
-      for (auto &row : M)
-        row.fill(Number(0.));
-      D.fill(Number(0.));
-      for (const auto &q : points)
-        {
-          const auto N = shape(q.xi, q.eta);
-          for (unsigned int j = 0; j < 4; ++j)
-            {
-              D[j] += q.weight * N[j];
-              for (unsigned int k = 0; k < 4; ++k)
-                M[j][k] += q.weight * N[j] * N[k];
-            }
-        }
       // M^-1 by Gauss-Jordan elimination with partial pivoting on values
       std::array<std::array<Number, 4>, 4> inverse{};
       for (unsigned int j = 0; j < 4; ++j)
@@ -473,6 +456,34 @@ namespace ContactDynamics
         for (unsigned int k = 0; k < 4; ++k)
           a[j][k] = D[j] * inverse[j][k];
       return a;
+    }
+
+    /**
+     * Coefficients a_jk of the dual basis psi_j = sum_k a_jk N_k of a face,
+     * biorthogonal to N on what the points integrate: A = D M^-1 with
+     * D_jj = sum w N_j and M_jk = sum w N_j N_k (the whole face, or its
+     * covered part, as in the 2-D dual_coefficients). Sum_j psi_j = 1.
+     */
+    template <typename Number>
+    std::array<std::array<Number, 4>, 4>
+    dual_coefficients(const std::vector<FacePoint<Number>> &points)
+    {
+      std::array<Number, 4>                D{};
+      std::array<std::array<Number, 4>, 4> M{};
+      for (auto &row : M)
+        row.fill(Number(0.));
+      D.fill(Number(0.));
+      for (const auto &q : points)
+        {
+          const auto N = shape(q.xi, q.eta);
+          for (unsigned int j = 0; j < 4; ++j)
+            {
+              D[j] += q.weight * N[j];
+              for (unsigned int k = 0; k < 4; ++k)
+                M[j][k] += q.weight * N[j] * N[k];
+            }
+        }
+      return dual_from_moments(D, M);
     }
 
     /**
