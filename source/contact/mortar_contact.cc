@@ -26,7 +26,7 @@ namespace ContactDynamics
                       "integrates the products of linear functions exactly. "
                       "3-D: the Witherden-Vincent rule on each triangle of "
                       "a clip polygon with this many points per direction, "
-                      "in [1, 7] (1, 6, 7, 15, 19, 28, 37 points, exact to "
+                      "in [2, 7] (6, 7, 15, 19, 28, 37 points, exact to "
                       "degree 2n-1; 2 is Dunavant's 6-point rule, exact to "
                       "degree 4, exact for parallelogram faces; on other "
                       "faces the patch test keeps an error of 2e-8 with 2, "
@@ -48,12 +48,16 @@ namespace ContactDynamics
     : SurfaceContact<dim>(contact, mortar.complementarity)
     , quadrature_points(mortar.quadrature_points)
   {
-    AssertThrow(dim == 2 || quadrature_points <= 7,
+    // (one point per triangle leaves the mass matrix of the dual basis
+    // singular: a triangular overlap has one point, the centroids of a
+    // square's fan lie where (xi - 1/2)(eta - 1/2) vanishes)
+    AssertThrow(dim == 2 || (quadrature_points >= 2 && quadrature_points <= 7),
                 ExcMessage("Contact/Mortar/Segment quadrature points = " +
                            std::to_string(quadrature_points) +
-                           ": in 3-D it selects a triangle rule with 1 to 7 "
-                           "points per direction (1, 6, 7, 15, 19, 28 or 37 "
-                           "points)."));
+                           ": in 3-D it selects a triangle rule with 2 to 7 "
+                           "points per direction (6, 7, 15, 19, 28 or 37 "
+                           "points); 1 point per triangle cannot define the "
+                           "dual basis."));
   }
 
   namespace

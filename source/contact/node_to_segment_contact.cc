@@ -44,10 +44,8 @@ namespace ContactDynamics
     : SurfaceContact<dim>(contact, parameters.complementarity)
     , smoothing_distance(parameters.smoothing_distance)
   {
-    AssertThrow(dim == 2,
-                ExcMessage("Contact/Formulation = node to segment is "
-                           "implemented in 2-D only so far; in 3-D use "
-                           "Contact/Formulation = mortar."));
+    // (create_contact_formulation() allows it in 2-D only)
+    Assert(dim == 2, ExcNotImplemented());
   }
 
   namespace

@@ -280,13 +280,8 @@ namespace ContactDynamics
                                "' has an empty surface."));
         pair.nodes.assign(pair.secondary.n_nodes(), NodeState());
         pair.friction_coefficient = contact.pairs[p].friction_coefficient;
-        AssertThrow(dim == 2 || pair.friction_coefficient == 0,
-                    ExcMessage(
-                      "The contact pair '" + contact.pairs[p].name +
-                      "' has a friction coefficient of " +
-                      std::to_string(pair.friction_coefficient) +
-                      ": friction is implemented in 2-D only so far; in "
-                      "3-D the coefficient must be 0 (frictionless)."));
+        // (create_contact_formulation() allows friction in 2-D only)
+        Assert(dim == 2 || pair.friction_coefficient == 0, ExcNotImplemented());
         for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
           {
             secondary_normal.insert(pair.secondary.dofs[j][dim]);
