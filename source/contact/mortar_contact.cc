@@ -464,7 +464,7 @@ namespace ContactDynamics
       const TrialState                           &state,
       const QGauss<1>                            &gauss,
       const double                                minimum_covered_fraction,
-      const double                                lambda[2],
+      const std::array<double, 2>                &lambda,
       std::vector<std::array<double, 2>>         &direction,
       std::vector<double>                        &hessian)
     {
@@ -610,7 +610,7 @@ namespace ContactDynamics
     // the faces' normalized gaps at a node), and a uniform penetration
     // does not act on the length of the face. Its Jacobian needs second
     // derivatives (or, approximate, the nodal-normal traction's).
-    const double lambda[2] = {m.lambda[0].val(), m.lambda[1].val()};
+    const std::array<double, 2> lambda{{m.lambda[0].val(), m.lambda[1].val()}};
     // direction[i][j] = w_j d(g_j / w_j)/du_i, with its derivatives
     std::vector<std::array<double, 2>> direction(n_positions, {{0., 0.}});
     std::vector<double> hessian(exact ? n_positions * n_positions : 0);
@@ -661,37 +661,24 @@ namespace ContactDynamics
                     (f.weight[j].size() > int(i) ? f.weight[j].dx(i) : 0.);
             }
       }
-    for (unsigned int i = 0; i < n_positions; ++i)
-      {
-        typename PatchForces::Derivatives derivatives;
-        double                            value = 0;
-        for (unsigned int j = 0; j < 2; ++j)
-          {
-            value -= lambda[j] * direction[i][j];
-            // d / d lambda_j
-            if (direction[i][j] != 0)
-              derivatives.emplace_back(unknowns[n_positions + j],
-                                       -direction[i][j]);
-          }
-        if (exact)
-          {
-            for (unsigned int l = 0; l < n_positions; ++l)
-              if (const double h = hessian[i * n_positions + l]; h != 0)
-                derivatives.emplace_back(unknowns[l], -h);
-          }
-        else
-          {
-            const auto r = sums.normal_rows.find(unknowns[i]);
-            if (r != sums.normal_rows.end())
-              for (unsigned int l = 0;
-                   l < n_positions && l < unsigned(r->second.size());
-                   ++l)
-                if (r->second.dx(l) != 0)
-                  derivatives.emplace_back(unknowns[l], r->second.dx(l));
-          }
-        if (value != 0 || !derivatives.empty())
-          forces.add(unknowns[i], value, std::move(derivatives));
-      }
+    // (approximate: the derivatives of the nodal-normal traction)
+    forces.add_normal_rows(unknowns,
+                           lambda,
+                           direction,
+                           hessian,
+                           [&](const unsigned int                 i,
+                               typename PatchForces::Derivatives &d) {
+                             if (exact)
+                               return;
+                             const auto r = sums.normal_rows.find(unknowns[i]);
+                             if (r != sums.normal_rows.end())
+                               for (unsigned int l = 0;
+                                    l < n_positions &&
+                                    l < unsigned(r->second.size());
+                                    ++l)
+                                 if (r->second.dx(l) != 0)
+                                   d.emplace_back(unknowns[l], r->second.dx(l));
+                           });
     for (const auto &r : sums.rows)
       forces.add(r.first,
                  r.second.val(),

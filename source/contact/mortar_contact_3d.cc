@@ -612,23 +612,10 @@ namespace ContactDynamics
                          direction,
                          hessian);
       }
-    for (unsigned int i = 0; i < n_positions; ++i)
-      {
-        typename PatchForces::Derivatives derivatives;
-        double                            value = 0;
-        for (unsigned int j = 0; j < 4; ++j)
-          {
-            value -= lambda[j] * direction[i][j];
-            if (direction[i][j] != 0)
-              derivatives.emplace_back(unknowns[n_positions + j],
-                                       -direction[i][j]);
-          }
-        if (exact)
-          for (unsigned int l = 0; l < n_positions; ++l)
-            if (const double h = hessian[i * n_positions + l]; h != 0)
-              derivatives.emplace_back(unknowns[l], -h);
-        if (value != 0 || !derivatives.empty())
-          forces.add(unknowns[i], value, std::move(derivatives));
-      }
+    forces.add_normal_rows(unknowns,
+                           lambda,
+                           direction,
+                           hessian,
+                           [](unsigned int, auto &) {});
   }
 } // namespace ContactDynamics
