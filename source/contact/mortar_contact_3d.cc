@@ -534,59 +534,70 @@ namespace ContactDynamics
                                    const TrialState  &state,
                                    PatchForces       &forces)
   {
-    // (a patch reads about a hundred unknowns: dynamic derivatives)
-    using AD             = ContactAD::AD;
     const auto &s        = pair.secondary;
     const auto &p        = pair.primary;
     const auto &face     = s.faces[e];
     const bool  exact    = this->complementarity.exact_jacobian;
     const auto  unknowns = patch_unknowns(pair, e, pair.candidates[e]);
+    const bool  rates = this->complementarity.holds_contact() && state.dynamic;
+    const TriangleRule &rule = triangle_rule(quadrature_points);
 
-    ContactAD::NodeVariables<3, AD> variables(unknowns, state);
-    FacePatch<AD>                   m;
     std::vector<std::pair<const Surface *, unsigned int>> nodes;
     for (const unsigned int n : ring_nodes(pair, e))
-      {
-        variables.add(s, n, m.xs[n], m.vs[n]);
-        nodes.emplace_back(&s, n);
-      }
+      nodes.emplace_back(&s, n);
     for (const unsigned int n : primary_nodes(pair, pair.candidates[e]))
-      {
-        variables.add(p, n, m.xp[n], m.vp[n]);
-        nodes.emplace_back(&p, n);
-      }
+      nodes.emplace_back(&p, n);
     const unsigned int    n_positions = 3 * nodes.size();
     std::array<double, 4> lambda;
     for (unsigned int j = 0; j < 4; ++j)
-      lambda[j] = variables.multiplier().val();
+      lambda[j] = state.u(unknowns[n_positions + j]);
 
-    const bool rates = this->complementarity.holds_contact() && state.dynamic;
-    const TriangleRule &rule = triangle_rule(quadrature_points);
-    const auto          sums =
-      face_sums(pair, e, m, rates, minimum_covered_fraction, rule);
-    for (unsigned int j = 0; j < 4; ++j)
-      {
-        ContactAD::add_to(pair.gap[face[j]], sums.gap[j], unknowns);
-        ContactAD::add_to(pair.weight[face[j]], sums.weight[j], unknowns);
-        ContactAD::add_to(pair.gap_rate[face[j]], sums.gap_rate[j], unknowns);
-      }
-    if (sums.covering.empty())
-      return;
-
-    // direction[i][j] = w_j d(g_j / w_j)/du_i
+    // the first derivatives: the gaps, weights and rates of the face's
+    // nodes, and direction[i][j] = w_j d(g_j / w_j)/du_i; derivatives on
+    // the stack where they fit (a patch reads about a hundred unknowns,
+    // and a heap allocation per temporary cost 4 times as much)
     std::vector<std::array<double, 4>> direction(n_positions,
                                                  {{0., 0., 0., 0.}});
-    const auto dx = [](const AD &x, const unsigned int i) {
-      return x.size() > int(i) ? x.dx(i) : 0.;
-    };
-    for (unsigned int j = 0; j < 4; ++j)
-      if (sums.weight[j].val() > 0)
+    std::vector<unsigned int>          covering;
+    const auto                         first_order = [&](const auto zero) {
+      using AD = std::decay_t<decltype(zero)>;
+      ContactAD::NodeVariables<3, AD> variables(unknowns, state);
+      FacePatch<AD>                   m;
+      for (const auto &[surface, n] : nodes)
         {
-          const double ratio = sums.gap[j].val() / sums.weight[j].val();
-          for (unsigned int i = 0; i < n_positions; ++i)
-            direction[i][j] =
-              dx(sums.gap[j], i) - ratio * dx(sums.weight[j], i);
+          auto &x = surface == &s ? m.xs : m.xp;
+          auto &v = surface == &s ? m.vs : m.vp;
+          variables.add(*surface, n, x[n], v[n]);
         }
+      const auto sums =
+        face_sums(pair, e, m, rates, minimum_covered_fraction, rule);
+      for (unsigned int j = 0; j < 4; ++j)
+        {
+          ContactAD::add_to(pair.gap[face[j]], sums.gap[j], unknowns);
+          ContactAD::add_to(pair.weight[face[j]], sums.weight[j], unknowns);
+          ContactAD::add_to(pair.gap_rate[face[j]], sums.gap_rate[j], unknowns);
+        }
+      covering      = sums.covering;
+      const auto dx = [](const AD &x, const unsigned int i) {
+        return x.size() > int(i) ? x.dx(i) : 0.;
+      };
+      for (unsigned int j = 0; j < 4; ++j)
+        if (!covering.empty() && sums.weight[j].val() > 0)
+          {
+            const double ratio = sums.gap[j].val() / sums.weight[j].val();
+            for (unsigned int i = 0; i < n_positions; ++i)
+              direction[i][j] =
+                dx(sums.gap[j], i) - ratio * dx(sums.weight[j], i);
+          }
+    };
+    constexpr unsigned int static_width = 128;
+    if (unknowns.size() <= static_width)
+      first_order(ContactAD::StaticAD<static_width>());
+    else
+      first_order(ContactAD::AD());
+    if (covering.empty())
+      return;
+
     // 'approximate': the geometric stiffness (the derivatives of the
     // directions) is dropped
     std::vector<double> hessian(exact ? n_positions * n_positions : 0);
@@ -599,13 +610,13 @@ namespace ContactDynamics
       {
         std::vector<double> position(n_positions);
         for (unsigned int i = 0; i < n_positions; ++i)
-          position[i] = (nodes[i / 3].first == &s ? m.xs : m.xp)
-                          .at(nodes[i / 3].second)[i % 3]
-                          .val();
+          position[i] =
+            nodes[i / 3].first->reference[nodes[i / 3].second][i % 3] +
+            state.u(unknowns[i]);
         exact_directions(pair,
                          e,
                          nodes,
-                         sums.covering,
+                         covering,
                          position,
                          rule,
                          lambda,
