@@ -186,12 +186,9 @@ namespace ContactDynamics
             {
               const auto   Ns = shape(q.xi_s, q.eta_s);
               const auto   Nm = shape(q.xi_m, q.eta_m);
-              Vec3<Number> n  = interpolate(ns, q.xi_s, q.eta_s);
-              n /= norm(n);
-              const Number g = (interpolate(xm, q.xi_m, q.eta_m) -
-                                interpolate(xs, q.xi_s, q.eta_s)) *
-                               n;
-              Number v_n = 0.;
+              Vec3<Number> n;
+              const Number g   = point_gap(xs, ns, xm, q, n);
+              Number       v_n = 0.;
               if (rates)
                 {
                   Vec3<Number> v_rel;
@@ -236,11 +233,8 @@ namespace ContactDynamics
       for (const auto &q : points)
         {
           const auto   Ns = shape(q.xi_s, q.eta_s);
-          Vec3<Number> n  = interpolate(ns, q.xi_s, q.eta_s);
-          n /= norm(n);
-          const Number g = (interpolate(xm, q.xi_m, q.eta_m) -
-                            interpolate(xs, q.xi_s, q.eta_s)) *
-                           n;
+          Vec3<Number> n;
+          const Number g = point_gap(xs, ns, xm, q, n);
           for (unsigned int j = 0, jk = 8; j < 4; ++j)
             {
               moments[j] += Ns[j] * g * q.weight;

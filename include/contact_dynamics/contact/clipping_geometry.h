@@ -633,6 +633,25 @@ namespace ContactDynamics
     }
 
     /**
+     * The gap (x_m - x_s) . n at a segment point, along the interpolated
+     * unit normal n of the secondary face (returned in `normal`).
+     */
+    template <typename Number>
+    Number
+    point_gap(const std::array<Vec3<Number>, 4> &xs,
+              const std::array<Vec3<Number>, 4> &ns,
+              const std::array<Vec3<Number>, 4> &xm,
+              const SegmentPoint<Number>        &q,
+              Vec3<Number>                      &normal)
+    {
+      normal = interpolate(ns, q.xi_s, q.eta_s);
+      normal /= norm(normal);
+      return (interpolate(xm, q.xi_m, q.eta_m) -
+              interpolate(xs, q.xi_s, q.eta_s)) *
+             normal;
+    }
+
+    /**
      * The points of a face's segments as points of the face, for
      * dual_coefficients() of a partially covered face (the 2-D rule: the
      * dual basis is biorthogonal on what is integrated).
@@ -665,11 +684,8 @@ namespace ContactDynamics
         {
           const auto   Ns = shape(q.xi_s, q.eta_s);
           const auto   Nm = shape(q.xi_m, q.eta_m);
-          Vec3<Number> n  = interpolate(ns, q.xi_s, q.eta_s);
-          n /= norm(n);
-          const Number g = (interpolate(xm, q.xi_m, q.eta_m) -
-                            interpolate(xs, q.xi_s, q.eta_s)) *
-                           n;
+          Vec3<Number> n;
+          const Number g = point_gap(xs, ns, xm, q, n);
           result.area += q.weight;
           for (unsigned int j = 0; j < 4; ++j)
             {
