@@ -109,126 +109,37 @@ namespace ContactDynamics
       return nodes;
     }
 
-    // the weighted gaps, weights and gap rates of a face's nodes
-    template <typename Number>
-    struct FaceSums
-    {
-      std::array<Number, 4>     gap, weight, gap_rate;
-      std::vector<unsigned int> covering; // primary faces with a segment
-
-      FaceSums()
-      {
-        for (auto *a : {&gap, &weight, &gap_rate})
-          a->fill(Number(0.));
-      }
-    };
-
-    // The mortar integrals of face e over its segments with the candidate
-    // primary faces that face it; nothing if they cover less than
-    // `minimum_fraction` of it (the dual basis of a sliver is
-    // ill-conditioned, as in 2-D).
-    template <typename Number, typename PairData>
-    FaceSums<Number>
-    face_sums(const PairData          &pair,
-              const unsigned int       e,
-              const FacePatch<Number> &m,
-              const bool               rates,
-              const double             minimum_fraction,
-              const TriangleRule      &rule)
-    {
-      const auto                 &s    = pair.secondary;
-      const auto                 &p    = pair.primary;
-      const auto                 &face = s.faces[e];
-      FaceSums<Number>            sums;
-      const auto                  xs = face_nodes(s, e, m.xs);
-      std::array<Vec3<Number>, 4> ns;
-      for (unsigned int a = 0; a < 4; ++a)
-        ns[a] = nodal_normal(s, face[a], m.xs);
-      const Vec3<double> face_normal =
-        values(corner_normal(xs, 0)) + values(corner_normal(xs, 3));
-
-      std::vector<std::vector<SegmentPoint<Number>>> segments;
-      double                                         covered = 0;
-      for (const unsigned int pf : pair.candidates[e])
-        {
-          const auto xm = face_nodes(p, pf, m.xp);
-          // (in double: the test needs no derivatives)
-          if ((values(corner_normal(xm, 0)) + values(corner_normal(xm, 3))) *
-                face_normal >=
-              0)
-            continue;
-          std::vector<SegmentPoint<Number>> points;
-          if (!segment_points(xs, ns, xm, clip_tolerance, points, rule))
-            continue;
-          for (const auto &q : points)
-            covered += value_of(q.weight);
-          segments.push_back(std::move(points));
-          sums.covering.push_back(pf);
-        }
-      double area = 0;
-      for (const auto &q : face_points(values(xs)))
-        area += q.weight;
-      if (segments.empty() || covered < minimum_fraction * area)
-        {
-          sums.covering.clear();
-          return sums;
-        }
-
-      std::vector<SegmentPoint<Number>> all;
-      for (const auto &points : segments)
-        all.insert(all.end(), points.begin(), points.end());
-      const auto dual = dual_coefficients(secondary_points(all));
-      for (unsigned int k = 0; k < segments.size(); ++k)
-        {
-          const auto &pf_nodes = p.faces[sums.covering[k]];
-          const auto  xm       = face_nodes(p, sums.covering[k], m.xp);
-          for (const auto &q : segments[k])
-            {
-              const auto   Ns = shape(q.xi_s, q.eta_s);
-              const auto   Nm = shape(q.xi_m, q.eta_m);
-              Vec3<Number> n;
-              const Number g   = point_gap(xs, ns, xm, q, n);
-              Number       v_n = 0.;
-              if (rates)
-                {
-                  Vec3<Number> v_rel;
-                  for (unsigned int a = 0; a < 4; ++a)
-                    v_rel +=
-                      Ns[a] * m.vs.at(face[a]) - Nm[a] * m.vp.at(pf_nodes[a]);
-                  v_n = v_rel * n;
-                }
-              for (unsigned int j = 0; j < 4; ++j)
-                {
-                  Number psi = 0.;
-                  for (unsigned int k2 = 0; k2 < 4; ++k2)
-                    psi += dual[j][k2] * Ns[k2];
-                  sums.gap[j] += psi * g * q.weight;
-                  sums.weight[j] += Ns[j] * q.weight;
-                  if (rates)
-                    sums.gap_rate[j] -= psi * v_n * q.weight;
-                }
-            }
-        }
-      return sums;
-    }
-
     // The mortar moments of one segment: I_m = sum N_m g w (m over the
     // secondary face's nodes), D_j = sum N_j w and M_jk = sum N_j N_k w
-    // (j <= k), from which the face's normalized gaps follow
-    // (normalized_gaps()).
-    constexpr unsigned int n_moments = 18;
+    // (j <= k), from which the face's gaps follow (dual_sums()); with
+    // `rates`, also R_m = sum N_m (v_rel . n) w (moments 18 to 21).
+    constexpr unsigned int n_moments = 18, n_rate_moments = 22;
 
-    template <typename Number>
-    std::array<Number, n_moments>
+    // The velocities of a segment's nodes, constants to segment_moments():
+    // they enter the rates linearly, with the coefficients dR_m / dv of the
+    // secondary (a < 4) and primary (4 + a) nodes' components d that
+    // segment_moments() adds to `coefficient[m][a][d]`.
+    struct SegmentVelocities
+    {
+      std::array<Vec3<double>, 4>                         vs, vm;
+      std::array<std::array<std::array<double, 3>, 8>, 4> coefficient{};
+    };
+
+    template <typename Number, std::size_t n_out>
+    std::array<Number, n_out>
     segment_moments(const std::array<Vec3<Number>, 4> &xs,
                     const std::array<Vec3<Number>, 4> &ns,
                     const std::array<Vec3<Number>, 4> &xm,
-                    const TriangleRule                &rule)
+                    const TriangleRule                &rule,
+                    SegmentVelocities                 *rates = nullptr)
     {
+      static_assert(n_out == n_moments || n_out == n_rate_moments);
+      Assert((n_out == n_rate_moments) == (rates != nullptr),
+             ExcInternalError());
       std::vector<SegmentPoint<Number>> points;
       AssertThrow(segment_points(xs, ns, xm, clip_tolerance, points, rule),
                   ExcInternalError());
-      std::array<Number, n_moments> moments;
+      std::array<Number, n_out> moments;
       moments.fill(Number(0.));
       for (const auto &q : points)
         {
@@ -242,16 +153,40 @@ namespace ContactDynamics
               for (unsigned int k = j; k < 4; ++k, ++jk)
                 moments[jk] += Ns[j] * Ns[k] * q.weight;
             }
+          if constexpr (n_out == n_rate_moments)
+            {
+              const auto Nm  = shape(q.xi_m, q.eta_m);
+              Number     v_n = 0.;
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  Number v = 0.;
+                  for (unsigned int a = 0; a < 4; ++a)
+                    v += Ns[a] * rates->vs[a][d] - Nm[a] * rates->vm[a][d];
+                  v_n += v * n[d];
+                }
+              for (unsigned int m = 0; m < 4; ++m)
+                {
+                  moments[n_moments + m] += Ns[m] * v_n * q.weight;
+                  const double c = value_of(Ns[m] * q.weight);
+                  for (unsigned int a = 0; a < 4; ++a)
+                    for (unsigned int d = 0; d < 3; ++d)
+                      {
+                        const double nd = value_of(n[d]);
+                        rates->coefficient[m][a][d] += c * value_of(Ns[a]) * nd;
+                        rates->coefficient[m][4 + a][d] -=
+                          c * value_of(Nm[a]) * nd;
+                      }
+                }
+            }
         }
       return moments;
     }
 
-    // g_j / w_j of the face's nodes from its moments (summed over the
-    // segments): the dual basis A = D M^-1 of the covered part,
-    // g_j = sum_m A_jm I_m, w_j = D_j
-    template <typename Number>
-    std::array<Number, 4>
-    normalized_gaps(const std::array<Number, n_moments> &moments)
+    // The dual basis A = D M^-1 of the covered part from a face's moments
+    // (summed over its segments)
+    template <typename Number, std::size_t n_out>
+    std::array<std::array<Number, 4>, 4>
+    dual_of(const std::array<Number, n_out> &moments)
     {
       std::array<Number, 4>                D;
       std::array<std::array<Number, 4>, 4> M;
@@ -261,15 +196,35 @@ namespace ContactDynamics
           for (unsigned int k = j; k < 4; ++k, ++jk)
             M[j][k] = M[k][j] = moments[jk];
         }
-      const auto            A = dual_from_moments(D, M);
-      std::array<Number, 4> ratio;
+      return dual_from_moments(D, M);
+    }
+
+    // sum_m A_jm moments[first + m] for the face's nodes j: the weighted
+    // gaps (first = 0) or rates (first = 18, with the opposite sign)
+    template <typename Number, std::size_t n_out>
+    std::array<Number, 4>
+    dual_sums(const std::array<std::array<Number, 4>, 4> &A,
+              const std::array<Number, n_out>            &moments,
+              const unsigned int                          first)
+    {
+      std::array<Number, 4> result;
       for (unsigned int j = 0; j < 4; ++j)
         {
-          Number g = 0.;
+          result[j] = 0.;
           for (unsigned int m = 0; m < 4; ++m)
-            g += A[j][m] * moments[m];
-          ratio[j] = g / D[j];
+            result[j] += A[j][m] * moments[first + m];
         }
+      return result;
+    }
+
+    // g_j / w_j of the face's nodes from its moments, w_j = D_j
+    template <typename Number>
+    std::array<Number, 4>
+    normalized_gaps(const std::array<Number, n_moments> &moments)
+    {
+      auto ratio = dual_sums(dual_of(moments), moments, 0);
+      for (unsigned int j = 0; j < 4; ++j)
+        ratio[j] /= moments[4 + j];
       return ratio;
     }
 
@@ -305,6 +260,263 @@ namespace ContactDynamics
     {
       using Inner = Sacado::Fad::SFad<double, n>;
       return Sacado::Fad::SFad<Inner, n>(n, k, Inner(n, k, value));
+    }
+
+    // The nodal normals of face e and their derivatives in the positions of
+    // the ring of secondary nodes around it (the first 3 n_ring entries of
+    // `position`, in the order of `nodes`): gradient[(3 a + c) 3 n_ring + i]
+    // and, if AD is a Fad of Fads, hessian[((3 a + c) 3 n_ring + i) 3 n_ring
+    // + l] of component c of node a's normal.
+    template <typename AD>
+    void
+    ring_normals(
+      const Surface                                               &s,
+      const unsigned int                                           e,
+      const std::vector<std::pair<const Surface *, unsigned int>> &nodes,
+      const std::vector<double>                                   &position,
+      std::array<Vec3<double>, 4>                                 &normal,
+      std::vector<double>                                         &gradient,
+      std::vector<double>                                         &hessian)
+    {
+      unsigned int n_ring = 0;
+      while (n_ring < nodes.size() && nodes[n_ring].first == &s)
+        ++n_ring;
+      const unsigned int n = 3 * n_ring;
+      NodeMap<AD>        ring;
+      for (unsigned int k = 0; k < n_ring; ++k)
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            const unsigned int i = 3 * k + d;
+            if constexpr (derivative_order<AD>() == 1)
+              ring[nodes[k].second][d] = AD(n, i, position[i]);
+            else
+              ring[nodes[k].second][d] =
+                AD(n, i, typename AD::value_type(n, i, position[i]));
+          }
+      gradient.assign(12 * n, 0.);
+      hessian.assign(derivative_order<AD>() == 1 ? 0 : 12 * n * n, 0.);
+      for (unsigned int a = 0; a < 4; ++a)
+        {
+          const auto v = nodal_normal(s, s.faces[e][a], ring);
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              const unsigned int ac = 3 * a + c;
+              normal[a][c]          = value_of(v[c]);
+              for (int i = 0; i < v[c].size(); ++i)
+                {
+                  gradient[ac * n + i] = value_of(v[c].dx(i));
+                  if constexpr (derivative_order<AD>() == 2)
+                    for (int l = 0; l < v[c].dx(i).size(); ++l)
+                      hessian[(ac * n + i) * n + l] = v[c].dx(i).dx(l);
+                }
+            }
+        }
+    }
+
+    // The sparse rows that map the 36 variables of a segment's moments
+    // (x of the secondary face, its nodal normals, x of the primary face)
+    // to the positions of a patch
+    using VariableMap =
+      std::array<std::vector<std::pair<unsigned, double>>, 36>;
+
+    VariableMap
+    variable_map(const std::array<unsigned int, 4> &secondary_index,
+                 const std::array<unsigned int, 4> &primary_index,
+                 const std::vector<double>         &normal_gradient,
+                 const unsigned int                 n_ring_positions)
+    {
+      VariableMap map;
+      for (unsigned int a = 0; a < 4; ++a)
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            map[3 * a + d]      = {{secondary_index[a] + d, 1.}};
+            map[24 + 3 * a + d] = {{primary_index[a] + d, 1.}};
+            for (unsigned int i = 0; i < n_ring_positions; ++i)
+              if (const double g =
+                    normal_gradient[(3 * a + d) * n_ring_positions + i];
+                  g != 0)
+                map[12 + 3 * a + d].emplace_back(i, g);
+          }
+      return map;
+    }
+
+    // What a face's first-order pass gives: its nodes' weighted gaps,
+    // weights and gap rates, and their derivatives in the patch's
+    // positions (d_x[i][j]), the rates' including those through the
+    // Newmark velocities.
+    struct FaceFirstOrder
+    {
+      std::array<double, 4>              gap{}, weight{}, gap_rate{};
+      std::vector<std::array<double, 4>> d_gap, d_weight, d_rate;
+      std::vector<unsigned int> covering; // primary faces with a segment
+    };
+
+    // The mortar integrals of face e over its segments with the candidate
+    // primary faces that face it; nothing if they cover less than
+    // `minimum_fraction` of it (the dual basis of a sliver is
+    // ill-conditioned, as in 2-D). The derivatives are chained, as the
+    // second ones in exact_directions(): each segment's moments in its 36
+    // variables, the nodal normals in the ring positions, the gaps in the
+    // summed moments; Fads over all of a patch's hundred unknowns cost 6
+    // times as much.
+    template <typename PairData>
+    FaceFirstOrder
+    first_order_sums(
+      const PairData                                              &pair,
+      const unsigned int                                           e,
+      const std::vector<std::pair<const Surface *, unsigned int>> &nodes,
+      const std::vector<double>                                   &position,
+      const std::vector<double>                                   &velocity,
+      const double                                                 c_v,
+      const bool                                                   rates,
+      const double        minimum_fraction,
+      const TriangleRule &rule)
+    {
+      const auto        &s   = pair.secondary;
+      const auto        &p   = pair.primary;
+      const unsigned int n_x = position.size();
+      std::map<std::pair<const Surface *, unsigned int>, unsigned int> index;
+      unsigned int n_ring = 0;
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        {
+          index[nodes[k]] = 3 * k;
+          n_ring += nodes[k].first == &s;
+        }
+      const auto corners = [&](const Surface               &surface,
+                               const unsigned int           f,
+                               const auto                  &x,
+                               std::array<unsigned int, 4> &first) {
+        std::array<Vec3<double>, 4> result;
+        for (unsigned int a = 0; a < 4; ++a)
+          {
+            first[a] = index.at({&surface, surface.faces[f][a]});
+            for (unsigned int d = 0; d < 3; ++d)
+              result[a][d] = x[first[a] + d];
+          }
+        return result;
+      };
+
+      std::array<Vec3<double>, 4> normal;
+      std::vector<double>         normal_gradient, unused;
+      ContactAD::dispatch(3 * n_ring, [&](const auto zero) {
+        ring_normals<std::decay_t<decltype(zero)>>(s,
+                                                   e,
+                                                   nodes,
+                                                   position,
+                                                   normal,
+                                                   normal_gradient,
+                                                   unused);
+      });
+      std::array<unsigned int, 4> is, ip;
+      const auto                  xs_d = corners(s, e, position, is);
+      const Vec3<double>          face_normal =
+        corner_normal(xs_d, 0) + corner_normal(xs_d, 3);
+
+      // the moments summed over the segments, G[q n_x + i] = their
+      // derivatives in position i, V[m n_x + i] = the rate moments' in
+      // velocity i
+      FaceFirstOrder                     result;
+      std::array<double, n_rate_moments> total{};
+      std::vector<double>    G(n_rate_moments * n_x, 0.), V(4 * n_x, 0.);
+      constexpr unsigned int n_v = 36;
+      using Segment              = Sacado::Fad::SFad<double, n_v>;
+      for (const unsigned int pf : pair.candidates[e])
+        {
+          const auto xm_d = corners(p, pf, position, ip);
+          if ((corner_normal(xm_d, 0) + corner_normal(xm_d, 3)) * face_normal >=
+              0)
+            continue;
+          {
+            // (most candidates do not overlap: found without derivatives)
+            std::vector<SegmentPoint<double>> points;
+            if (!segment_points(xs_d,
+                                normal,
+                                xm_d,
+                                clip_tolerance,
+                                points,
+                                rule))
+              continue;
+          }
+          std::array<Vec3<Segment>, 4> xs, ns, xm;
+          for (unsigned int a = 0; a < 4; ++a)
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                xs[a][d] = Segment(n_v, 3 * a + d, xs_d[a][d]);
+                ns[a][d] = Segment(n_v, 12 + 3 * a + d, normal[a][d]);
+                xm[a][d] = Segment(n_v, 24 + 3 * a + d, xm_d[a][d]);
+              }
+          SegmentVelocities v;
+          if (rates)
+            for (unsigned int a = 0; a < 4; ++a)
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  v.vs[a][d] = velocity[is[a] + d];
+                  v.vm[a][d] = velocity[ip[a] + d];
+                }
+          const auto moments =
+            segment_moments<Segment, n_rate_moments>(xs, ns, xm, rule, &v);
+          const auto map = variable_map(is, ip, normal_gradient, 3 * n_ring);
+          for (unsigned int q = 0; q < n_rate_moments; ++q)
+            {
+              total[q] += moments[q].val();
+              for (unsigned int w = 0; w < n_v; ++w)
+                if (const double dq = moments[q].fastAccessDx(w); dq != 0)
+                  for (const auto &[i, y] : map[w])
+                    G[q * n_x + i] += dq * y;
+            }
+          if (rates)
+            for (unsigned int m = 0; m < 4; ++m)
+              for (unsigned int a = 0; a < 8; ++a)
+                for (unsigned int d = 0; d < 3; ++d)
+                  V[m * n_x + (a < 4 ? is[a] : ip[a - 4]) + d] +=
+                    v.coefficient[m][a][d];
+          result.covering.push_back(pf);
+        }
+      double area = 0, covered = 0;
+      for (const auto &q : face_points(xs_d))
+        area += q.weight;
+      for (unsigned int j = 0; j < 4; ++j)
+        covered += total[4 + j];
+      if (result.covering.empty() || covered < minimum_fraction * area)
+        {
+          result.covering.clear();
+          return result;
+        }
+
+      // the gaps and rates in the summed moments
+      using Moments = Sacado::Fad::SFad<double, n_rate_moments>;
+      std::array<Moments, n_rate_moments> moments;
+      for (unsigned int q = 0; q < n_rate_moments; ++q)
+        moments[q] = Moments(n_rate_moments, q, total[q]);
+      const auto A    = dual_of(moments);
+      const auto gap  = dual_sums(A, moments, 0);
+      const auto rate = dual_sums(A, moments, n_moments);
+      for (auto *d : {&result.d_gap, &result.d_weight, &result.d_rate})
+        d->assign(n_x, {{0., 0., 0., 0.}});
+      for (unsigned int j = 0; j < 4; ++j)
+        {
+          result.gap[j]      = gap[j].val();
+          result.weight[j]   = total[4 + j];
+          result.gap_rate[j] = rates ? -rate[j].val() : 0.;
+          for (unsigned int i = 0; i < n_x; ++i)
+            result.d_weight[i][j] = G[(4 + j) * n_x + i];
+          for (unsigned int q = 0; q < n_rate_moments; ++q)
+            {
+              const double dg = gap[j].fastAccessDx(q);
+              const double dr = rates ? -rate[j].fastAccessDx(q) : 0.;
+              if (dg != 0 || dr != 0)
+                for (unsigned int i = 0; i < n_x; ++i)
+                  {
+                    result.d_gap[i][j] += dg * G[q * n_x + i];
+                    result.d_rate[i][j] += dr * G[q * n_x + i];
+                  }
+            }
+          if (rates)
+            for (unsigned int m = 0; m < 4; ++m)
+              for (unsigned int i = 0; i < n_x; ++i)
+                result.d_rate[i][j] -= c_v * A[j][m].val() * V[m * n_x + i];
+        }
+      return result;
     }
 
     // The directions w_j d(g_j / w_j)/du_i of the normal force and their
@@ -345,35 +557,16 @@ namespace ContactDynamics
         }
 
       // (1) nodal normals in the ring positions (the first 3 n_ring)
-      using Inner = Sacado::Fad::DFad<double>;
-      using AD2   = Sacado::Fad::DFad<Inner>;
-      NodeMap<AD2> ring;
-      for (unsigned int k = 0; k < n_ring; ++k)
-        for (unsigned int d = 0; d < 3; ++d)
-          ring[nodes[k].second][d] =
-            AD2(3 * n_ring,
-                3 * k + d,
-                Inner(3 * n_ring, 3 * k + d, position[3 * k + d]));
       std::array<Vec3<double>, 4> normal;
-      // d normal[a][c] / dx_i and d^2 normal[a][c] / dx_i dx_l, i, l < 3 n_ring
-      std::vector<double> normal_gradient(12 * 3 * n_ring, 0.),
-        normal_hessian(12 * 9 * n_ring * n_ring, 0.);
-      for (unsigned int a = 0; a < 4; ++a)
-        {
-          const auto n = nodal_normal(s, face[a], ring);
-          for (unsigned int c = 0; c < 3; ++c)
-            {
-              const unsigned int ac = 3 * a + c;
-              normal[a][c]          = n[c].val().val();
-              for (int i = 0; i < n[c].size(); ++i)
-                {
-                  normal_gradient[ac * 3 * n_ring + i] = n[c].dx(i).val();
-                  for (int l = 0; l < n[c].dx(i).size(); ++l)
-                    normal_hessian[(ac * 3 * n_ring + i) * 3 * n_ring + l] =
-                      n[c].dx(i).dx(l);
-                }
-            }
-        }
+      std::vector<double>         normal_gradient, normal_hessian;
+      ring_normals<Sacado::Fad::DFad<Sacado::Fad::DFad<double>>>(
+        s,
+        e,
+        nodes,
+        position,
+        normal,
+        normal_gradient,
+        normal_hessian);
 
       // (2) each segment's moments in its 36 variables; variable k is
       // x_face (k < 12), the normals (12 <= k < 24) or x_primary, and
@@ -381,35 +574,31 @@ namespace ContactDynamics
       constexpr unsigned int n_v = 36;
       using Segment2 = Sacado::Fad::SFad<Sacado::Fad::SFad<double, n_v>, n_v>;
       std::vector<SecondOrder<n_moments, n_v>> segments;
-      std::vector<std::array<std::vector<std::pair<unsigned, double>>, n_v>>
-                                    maps;
-      std::array<double, n_moments> total;
+      std::vector<VariableMap>                 maps;
+      std::array<double, n_moments>            total;
       total.fill(0.);
       for (const unsigned int pf : covering)
         {
-          std::array<Vec3<Segment2>, 4>                             xs, ns, xm;
-          std::array<std::vector<std::pair<unsigned, double>>, n_v> map;
+          std::array<Vec3<Segment2>, 4> xs, ns, xm;
+          std::array<unsigned int, 4>   is, ip;
           for (unsigned int a = 0; a < 4; ++a)
-            for (unsigned int d = 0; d < 3; ++d)
-              {
-                const unsigned int is = index.at({&s, face[a]}) + d;
-                const unsigned int ip = index.at({&p, p.faces[pf][a]}) + d;
-                xs[a][d]              = seeded<n_v>(position[is], 3 * a + d);
-                ns[a][d]            = seeded<n_v>(normal[a][d], 12 + 3 * a + d);
-                xm[a][d]            = seeded<n_v>(position[ip], 24 + 3 * a + d);
-                map[3 * a + d]      = {{is, 1.}};
-                map[24 + 3 * a + d] = {{ip, 1.}};
-                for (unsigned int i = 0; i < 3 * n_ring; ++i)
-                  if (const double g =
-                        normal_gradient[(3 * a + d) * 3 * n_ring + i];
-                      g != 0)
-                    map[12 + 3 * a + d].emplace_back(i, g);
-              }
+            {
+              is[a] = index.at({&s, face[a]});
+              ip[a] = index.at({&p, p.faces[pf][a]});
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  xs[a][d] = seeded<n_v>(position[is[a] + d], 3 * a + d);
+                  ns[a][d] = seeded<n_v>(normal[a][d], 12 + 3 * a + d);
+                  xm[a][d] = seeded<n_v>(position[ip[a] + d], 24 + 3 * a + d);
+                }
+            }
+          const auto map = variable_map(is, ip, normal_gradient, 3 * n_ring);
           segments.emplace_back();
-          segments.back().set(segment_moments(xs, ns, xm, rule));
+          segments.back().set(
+            segment_moments<Segment2, n_moments>(xs, ns, xm, rule));
           for (unsigned int q = 0; q < n_moments; ++q)
             total[q] += segments.back().value[q];
-          maps.push_back(std::move(map));
+          maps.push_back(map);
         }
 
       // (3) the normalized gaps in the moments
@@ -546,51 +735,51 @@ namespace ContactDynamics
     for (unsigned int j = 0; j < 4; ++j)
       lambda[j] = state.u(unknowns[n_positions + j]);
 
-    // the first derivatives: the gaps, weights and rates of the face's
-    // nodes, and direction[i][j] = w_j d(g_j / w_j)/du_i; derivatives on
-    // the stack where they fit (a patch reads about a hundred unknowns,
-    // and a heap allocation per temporary cost 4 times as much)
-    std::vector<std::array<double, 4>> direction(n_positions,
-                                                 {{0., 0., 0., 0.}});
-    std::vector<unsigned int>          covering;
-    const auto                         first_order = [&](const auto zero) {
-      using AD = std::decay_t<decltype(zero)>;
-      ContactAD::NodeVariables<3, AD> variables(unknowns, state);
-      FacePatch<AD>                   m;
-      for (const auto &[surface, n] : nodes)
-        {
-          auto &x = surface == &s ? m.xs : m.xp;
-          auto &v = surface == &s ? m.vs : m.vp;
-          variables.add(*surface, n, x[n], v[n]);
-        }
-      const auto sums =
-        face_sums(pair, e, m, rates, minimum_covered_fraction, rule);
-      for (unsigned int j = 0; j < 4; ++j)
-        {
-          ContactAD::add_to(pair.gap[face[j]], sums.gap[j], unknowns);
-          ContactAD::add_to(pair.weight[face[j]], sums.weight[j], unknowns);
-          ContactAD::add_to(pair.gap_rate[face[j]], sums.gap_rate[j], unknowns);
-        }
-      covering      = sums.covering;
-      const auto dx = [](const AD &x, const unsigned int i) {
-        return x.size() > int(i) ? x.dx(i) : 0.;
-      };
-      for (unsigned int j = 0; j < 4; ++j)
-        if (!covering.empty() && sums.weight[j].val() > 0)
-          {
-            const double ratio = sums.gap[j].val() / sums.weight[j].val();
-            for (unsigned int i = 0; i < n_positions; ++i)
-              direction[i][j] =
-                dx(sums.gap[j], i) - ratio * dx(sums.weight[j], i);
-          }
-    };
-    constexpr unsigned int static_width = 128;
-    if (unknowns.size() <= static_width)
-      first_order(ContactAD::StaticAD<static_width>());
-    else
-      first_order(ContactAD::AD());
+    std::vector<double> position(n_positions), velocity(n_positions);
+    for (unsigned int i = 0; i < n_positions; ++i)
+      {
+        position[i] =
+          nodes[i / 3].first->reference[nodes[i / 3].second][i % 3] +
+          state.u(unknowns[i]);
+        velocity[i] = state.v(unknowns[i]);
+      }
+    // the gaps, weights and rates of the face's nodes with their first
+    // derivatives, and direction[i][j] = w_j d(g_j / w_j)/du_i
+    const auto  sums     = first_order_sums(pair,
+                                       e,
+                                       nodes,
+                                       position,
+                                       velocity,
+                                       state.c_v,
+                                       rates,
+                                       minimum_covered_fraction,
+                                       rule);
+    const auto &covering = sums.covering;
     if (covering.empty())
       return;
+    const auto add = [&](LinearizedValue                          &target,
+                         const double                              value,
+                         const std::vector<std::array<double, 4>> &d,
+                         const unsigned int                        j) {
+      target.value += value;
+      for (unsigned int i = 0; i < n_positions; ++i)
+        if (d[i][j] != 0)
+          target.derivatives[unknowns[i]] += d[i][j];
+    };
+    std::vector<std::array<double, 4>> direction(n_positions,
+                                                 {{0., 0., 0., 0.}});
+    for (unsigned int j = 0; j < 4; ++j)
+      {
+        add(pair.gap[face[j]], sums.gap[j], sums.d_gap, j);
+        add(pair.weight[face[j]], sums.weight[j], sums.d_weight, j);
+        add(pair.gap_rate[face[j]], sums.gap_rate[j], sums.d_rate, j);
+        if (sums.weight[j] > 0)
+          {
+            const double ratio = sums.gap[j] / sums.weight[j];
+            for (unsigned int i = 0; i < n_positions; ++i)
+              direction[i][j] = sums.d_gap[i][j] - ratio * sums.d_weight[i][j];
+          }
+      }
 
     // 'approximate': the geometric stiffness (the derivatives of the
     // directions) is dropped
@@ -602,11 +791,6 @@ namespace ContactDynamics
           return l != 0;
         }))
       {
-        std::vector<double> position(n_positions);
-        for (unsigned int i = 0; i < n_positions; ++i)
-          position[i] =
-            nodes[i / 3].first->reference[nodes[i / 3].second][i % 3] +
-            state.u(unknowns[i]);
         exact_directions(pair,
                          e,
                          nodes,
