@@ -298,21 +298,72 @@ namespace ContactDynamics
         }
     }
 
-    // a row with the condensed multipliers substituted
-    const auto substitute = [&](const SparseRow &row, double &rhs_value) {
-      SparseRow result;
-      for (const auto &x : row)
-        if (!is_condensed(x.first))
-          result.push_back(x);
+    std::vector<bool> condensed_column(matrix.NumMyCols(), false);
+    for (int c = 0; c < matrix.NumMyCols(); ++c)
+      condensed_column[c] = is_condensed(static_cast<Index>(matrix.GCID(c)));
+    // a row of the matrix with the condensed multipliers substituted: in
+    // 3-D a row collects some thirty eliminations of two hundred columns
+    // each, merged in linear time in a dense accumulator over "slots" (the
+    // columns that occur) instead of sorted
+    std::unordered_map<Index, unsigned int> slot_of;
+    std::vector<Index>                      slot_column;
+    const auto                              slot = [&](const Index column) {
+      const auto [it, inserted] =
+        slot_of.try_emplace(column, slot_column.size());
+      if (inserted)
+        slot_column.push_back(column);
+      return it->second;
+    };
+    std::vector<unsigned int> local_slot(matrix.NumMyCols());
+    for (int c = 0; c < matrix.NumMyCols(); ++c)
+      local_slot[c] = slot(static_cast<Index>(matrix.GCID(c)));
+    std::unordered_map<Index, std::vector<unsigned int>> elimination_slots;
+    for (const auto &[m, x] : all_eliminations)
+      {
+        auto &slots = elimination_slots[m];
+        for (const Index c : x.columns)
+          slots.push_back(slot(c));
+      }
+    std::vector<double>       sum(slot_column.size(), 0.);
+    std::vector<bool>         touched(slot_column.size(), false);
+    std::vector<unsigned int> touched_slots;
+    const auto add_to_sum = [&](const unsigned int s, const double value) {
+      if (!touched[s])
+        {
+          touched[s] = true;
+          touched_slots.push_back(s);
+        }
+      sum[s] += value;
+    };
+    const auto substitute = [&](const Index row, double &rhs_value) {
+      int     n       = 0;
+      double *values  = nullptr;
+      int    *indices = nullptr;
+      matrix.ExtractMyRowView(matrix.LRID(static_cast<int>(row)),
+                              n,
+                              values,
+                              indices);
+      for (int k = 0; k < n; ++k)
+        if (!condensed_column[indices[k]])
+          add_to_sum(local_slot[indices[k]], values[k]);
         else
           {
-            const Elimination &elimination = all_eliminations.at(x.first);
-            rhs_value -= x.second * elimination.e;
-            for (unsigned int c = 0; c < elimination.columns.size(); ++c)
-              result.emplace_back(elimination.columns[c],
-                                  -x.second * elimination.values[c]);
+            const Index        m           = matrix.GCID(indices[k]);
+            const Elimination &elimination = all_eliminations.at(m);
+            const auto        &slots       = elimination_slots.at(m);
+            rhs_value -= values[k] * elimination.e;
+            for (unsigned int c = 0; c < slots.size(); ++c)
+              add_to_sum(slots[c], -values[k] * elimination.values[c]);
           }
-      compress_row(result);
+      SparseRow result;
+      for (const unsigned int s : touched_slots)
+        {
+          if (sum[s] != 0)
+            result.emplace_back(slot_column[s], sum[s]);
+          sum[s]     = 0;
+          touched[s] = false;
+        }
+      touched_slots.clear();
       return result;
     };
 
@@ -327,7 +378,7 @@ namespace ContactDynamics
           {
             const Index m = g.group->multipliers[a];
             values[a]     = rhs(m);
-            equations[a]  = substitute(read_row(matrix, m), values[a]);
+            equations[a]  = substitute(m, values[a]);
           }
         for (unsigned int b = k; b < dim; ++b)
           {
@@ -376,9 +427,6 @@ namespace ContactDynamics
 
     // the rows that change: the groups' displacement rows (above), the
     // condensed multipliers' rows, and every row with a condensed column
-    std::vector<bool> condensed_column(matrix.NumMyCols(), false);
-    for (int c = 0; c < matrix.NumMyCols(); ++c)
-      condensed_column[c] = is_condensed(static_cast<Index>(matrix.GCID(c)));
     std::vector<Index> affected;
     for (int r = 0; r < matrix.NumMyRows(); ++r)
       {
@@ -405,7 +453,7 @@ namespace ContactDynamics
             value   = 0;
           }
         else
-          new_row = substitute(read_row(matrix, row), value);
+          new_row = substitute(row, value);
         replaced[row] = {std::move(new_row), value};
       }
 
