@@ -11,6 +11,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -18,6 +20,29 @@ namespace ContactDynamics
 {
   namespace
   {
+    // Adds factor times the derivatives in unconstrained columns to a row
+    // of the Jacobian in one call: entry by entry, the matrix's index
+    // searches cost as much as the 3-D mortar patches.
+    template <typename Derivatives>
+    void
+    add_row(MatrixType                      &jacobian,
+            const AffineConstraints<double> &constraints,
+            const types::global_dof_index    row,
+            const Derivatives               &derivatives,
+            const double                     factor = 1.)
+    {
+      std::vector<types::global_dof_index> columns;
+      std::vector<double>                  values;
+      for (const auto &[column, value] : derivatives)
+        if (!constraints.is_constrained(column))
+          {
+            columns.push_back(column);
+            values.push_back(factor * value);
+          }
+      if (!columns.empty())
+        jacobian.add(row, columns, values);
+    }
+
     // the two-valued selections parse into bools
     using Stabilization = ComplementarityParameters::Stabilization;
     const Selection<Stabilization> stabilization_names{
@@ -295,15 +320,25 @@ namespace ContactDynamics
         for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
           pair.owned_node[j] =
             owned_dofs.is_element(pair.secondary.dofs[j][dim]);
-        pair.handled_patch.assign(n_patches(pair), false);
-        pair.force_patch.assign(n_patches(pair), false);
-        for (unsigned int e = 0; e < n_patches(pair); ++e)
+        const unsigned int rank      = Utilities::MPI::this_mpi_process(comm);
+        const unsigned int n_ranks   = Utilities::MPI::n_mpi_processes(comm);
+        const unsigned int n_patches = this->n_patches(pair);
+        pair.node_owner.assign(pair.secondary.n_nodes(), 0);
+        for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
+          if (pair.owned_node[j])
+            pair.node_owner[j] = rank;
+        if (n_ranks > 1)
+          Utilities::MPI::sum(pair.node_owner, comm, pair.node_owner);
+        pair.handled_patch.assign(n_patches, false);
+        pair.assembled_patch.assign(n_patches, false);
+        for (unsigned int e = 0; e < n_patches; ++e)
           {
-            const auto nodes = patch_nodes(pair, e);
-            for (const unsigned int j : nodes)
+            for (const unsigned int j : patch_nodes(pair, e))
               pair.handled_patch[e] =
                 pair.handled_patch[e] || pair.owned_node[j];
-            pair.force_patch[e] = pair.owned_node[nodes[0]];
+            // consecutive patches (neighbours, mostly) to one process
+            pair.assembled_patch[e] =
+              (std::uint64_t(e) * n_ranks) / n_patches == rank;
           }
       }
     normal_multiplier_dofs.assign(secondary_normal.begin(),
@@ -371,7 +406,7 @@ namespace ContactDynamics
     std::vector<BoundingBox<dim>> secondary, primary;
     std::vector<unsigned int>     handled;
     for (unsigned int p = 0; p < n_patches(pair); ++p)
-      if (pair.handled_patch[p])
+      if (pair.handled_patch[p] || pair.assembled_patch[p])
         {
           double           size = 0, committed_size = 0;
           BoundingBox<dim> box = patch_box(pair, p, u, size);
@@ -436,14 +471,16 @@ namespace ContactDynamics
         std::vector<std::set<types::global_dof_index>> node_columns(
           pair.secondary.n_nodes());
         for (unsigned int p = 0; p < n_patches(pair); ++p)
-          if (pair.handled_patch[p])
+          if (pair.handled_patch[p] || pair.assembled_patch[p])
             {
               const auto unknowns = patch_unknowns(pair, p, pair.pattern[p]);
-              for (const auto row : unknowns)
-                for (const auto col : unknowns)
-                  dsp.add(row, col);
-              for (const unsigned int n : patch_nodes(pair, p))
-                node_columns[n].insert(unknowns.begin(), unknowns.end());
+              if (pair.assembled_patch[p])
+                for (const auto row : unknowns)
+                  for (const auto col : unknowns)
+                    dsp.add(row, col);
+              if (pair.handled_patch[p])
+                for (const unsigned int n : patch_nodes(pair, p))
+                  node_columns[n].insert(unknowns.begin(), unknowns.end());
             }
         for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
           if (pair.owned_node[j])
@@ -516,9 +553,7 @@ namespace ContactDynamics
           continue;
         system.residual(r.row) += r.value;
         if (system.with_jacobian)
-          for (const auto &d : r.derivatives)
-            if (!system.constraints.is_constrained(d.first))
-              system.jacobian.add(r.row, d.first, d.second);
+          add_row(system.jacobian, system.constraints, r.row, r.derivatives);
       }
     for (const auto &t : forces.tangential)
       work.add_friction_force(t.first, t.second);
@@ -618,9 +653,11 @@ namespace ContactDynamics
       {
         system.residual(row) += scale * constraint.value;
         if (system.with_jacobian)
-          for (const auto &d : constraint.derivatives)
-            if (!system.constraints.is_constrained(d.first))
-              system.jacobian.add(row, d.first, scale * d.second);
+          add_row(system.jacobian,
+                  system.constraints,
+                  row,
+                  constraint.derivatives,
+                  scale);
       }
     else
       {
@@ -683,11 +720,11 @@ namespace ContactDynamics
         ++n_stick;
         system.residual(row) += scale * complementarity.c_t * v.value;
         if (system.with_jacobian)
-          for (const auto &d : v.derivatives)
-            if (!system.constraints.is_constrained(d.first))
-              system.jacobian.add(row,
-                                  d.first,
-                                  scale * complementarity.c_t * d.second);
+          add_row(system.jacobian,
+                  system.constraints,
+                  row,
+                  v.derivatives,
+                  scale * complementarity.c_t);
         return;
       }
     ++n_slip;
@@ -727,7 +764,17 @@ namespace ContactDynamics
       comm,
       [&]() {
         for (auto &pair : pairs)
-          assemble_pair(pair, state, system);
+          assemble_patches(pair, state, system);
+      },
+      [&]() {
+        for (auto &pair : pairs)
+          exchange_node_sums(pair);
+      });
+    run_collectively(
+      comm,
+      [&]() {
+        for (auto &pair : pairs)
+          assemble_nodes(pair, state, system);
       },
       [&]() {
         finish_assembly(system);
@@ -736,28 +783,83 @@ namespace ContactDynamics
 
   template <int dim>
   void
-  SurfaceContact<dim>::assemble_pair(PairData           &pair,
-                                     const TrialState   &state,
-                                     const LinearSystem &system)
+  SurfaceContact<dim>::assemble_patches(PairData           &pair,
+                                        const TrialState   &state,
+                                        const LinearSystem &system)
   {
     const unsigned int n_nodes = pair.secondary.n_nodes();
     pair.gap.assign(n_nodes, LinearizedValue());
     pair.weight.assign(n_nodes, LinearizedValue());
     pair.gap_rate.assign(n_nodes, LinearizedValue());
     pair.slip_rate.assign(n_nodes, LinearizedValue());
-    // a patch at the edge of this process's part of the surface is
-    // assembled by both neighbours for the gaps of their nodes, its forces
-    // by one of them
     for (unsigned int p = 0; p < n_patches(pair); ++p)
-      if (pair.handled_patch[p])
+      if (pair.assembled_patch[p])
         {
           PatchForces forces;
           assemble_patch(pair, p, state, forces);
-          if (pair.force_patch[p])
-            add_forces(forces, system);
+          add_forces(forces, system);
         }
+  }
 
-    for (unsigned int j = 0; j < n_nodes; ++j)
+  template <int dim>
+  void
+  SurfaceContact<dim>::exchange_node_sums(PairData &pair) const
+  {
+    if (Utilities::MPI::n_mpi_processes(comm) == 1)
+      return;
+    // per node: its index, then per quantity the value, the number of
+    // derivatives and the (unknown, derivative) pairs, all as doubles
+    // (exact for indices below 2^53)
+    std::map<unsigned int, std::vector<double>> outgoing;
+    for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
+      if (!pair.owned_node[j])
+        {
+          auto quantities = {&pair.gap[j],
+                             &pair.weight[j],
+                             &pair.gap_rate[j],
+                             &pair.slip_rate[j]};
+          if (std::all_of(quantities.begin(), quantities.end(), [](auto *q) {
+                return q->value == 0 && q->derivatives.empty();
+              }))
+            continue;
+          auto &data = outgoing[pair.node_owner[j]];
+          data.push_back(j);
+          for (LinearizedValue *q : quantities)
+            {
+              data.push_back(q->value);
+              data.push_back(q->derivatives.size());
+              for (const auto &[i, d] : q->derivatives)
+                data.insert(data.end(), {double(i), d});
+              *q = LinearizedValue();
+            }
+        }
+    for (const auto &[rank, data] :
+         Utilities::MPI::some_to_some(comm, outgoing))
+      for (auto x = data.begin(); x != data.end();)
+        {
+          const unsigned int j = std::lround(*x++);
+          Assert(pair.owned_node[j], ExcInternalError());
+          for (LinearizedValue *q : {&pair.gap[j],
+                                     &pair.weight[j],
+                                     &pair.gap_rate[j],
+                                     &pair.slip_rate[j]})
+            {
+              q->value += *x++;
+              const long n = std::lround(*x++);
+              for (long k = 0; k < n; ++k, x += 2)
+                q->derivatives[types::global_dof_index(std::llround(x[0]))] +=
+                  x[1];
+            }
+        }
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::assemble_nodes(PairData           &pair,
+                                      const TrialState   &state,
+                                      const LinearSystem &system)
+  {
+    for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
       if (pair.owned_node[j])
         {
           LinearizedValue constraint;

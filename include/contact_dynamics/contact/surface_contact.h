@@ -229,9 +229,12 @@ namespace ContactDynamics
       std::vector<LinearizedValue> gap, weight, gap_rate, slip_rate;
       double                       friction_coefficient = 0;
       // in parallel: the nodes whose multipliers this process owns, the
-      // patches it assembles (those touching its nodes, for their gaps) and
-      // of these the ones whose forces it adds (first node owned)
-      std::vector<bool> owned_node, handled_patch, force_patch;
+      // patches that touch them (whose candidates and couplings it needs)
+      // and the patches it computes (an equal share of all: the contact
+      // surface may lie on one process's part of the mesh); a patch's
+      // contributions to a node go to the node's owner (node_owner)
+      std::vector<bool>         owned_node, handled_patch, assembled_patch;
+      std::vector<unsigned int> node_owner;
       // secondary nodes at the last committed step
       std::vector<Point<dim>> position;
     };
@@ -378,11 +381,25 @@ namespace ContactDynamics
       VectorType                      &residual_full; // all force rows
     };
 
-    /** The patches and the complementarity rows of the owned nodes. */
+    /** The patches this process computes; their forces are added. */
     void
-    assemble_pair(PairData           &pair,
-                  const TrialState   &state,
-                  const LinearSystem &system);
+    assemble_patches(PairData           &pair,
+                     const TrialState   &state,
+                     const LinearSystem &system);
+
+    /**
+     * Sends the patches' contributions to the gaps, weights and rates of
+     * other processes' nodes to their owners, and adds those received
+     * (collective).
+     */
+    void
+    exchange_node_sums(PairData &pair) const;
+
+    /** The complementarity rows of the owned nodes. */
+    void
+    assemble_nodes(PairData           &pair,
+                   const TrialState   &state,
+                   const LinearSystem &system);
 
     /** Adds a patch's forces to the system and the contact work. */
     void
