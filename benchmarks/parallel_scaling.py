@@ -16,6 +16,12 @@ table. Scenes and their length:
   ironing         prm/ironing/mortar.prm to t = 0.2 (20 steps, 8176 cells)
   bouncing_block  prm/bouncing_block/mortar_stabilized.prm to t = 1 (40
                   steps, 590 cells: too small to gain from a second process)
+  bouncing_block_3d  prm/bouncing_block/mortar_3d.prm to t = 0.3 (12 steps,
+                  5900 cells, 44,286 unknowns; first contact at 0.225 s);
+                  run with --solvers AMG (the 3-D table of doc/benchmarks.md:
+                  --only bouncing_block_3d --solvers AMG
+                  --table doc/bouncing-block-3d-table.md
+                  --csv benchmarks/results/bouncing_block_3d.csv)
 VTU output is off: the measurements are of the solver.
 """
 import argparse
@@ -36,6 +42,7 @@ SCENES = {
     "hertz": ("prm/examples/hertz.prm", None),
     "ironing": ("prm/ironing/mortar.prm", 0.2),
     "bouncing_block": ("prm/bouncing_block/mortar_stabilized.prm", 1.0),
+    "bouncing_block_3d": ("prm/bouncing_block/mortar_3d.prm", 0.3),
 }
 SECTIONS = ["bulk assembly", "contact search", "contact assembly",
             "linear solve", "energies", "output"]
@@ -77,6 +84,8 @@ def main():
     ap.add_argument("--exe", type=Path, default=REPO / "build" / "contact-dynamics")
     ap.add_argument("--results", type=Path, default=REPO / "benchmarks" / "results")
     ap.add_argument("--table", type=Path, default=REPO / "doc" / "parallel-scaling-table.md")
+    ap.add_argument("--csv", type=Path, default=None,
+                    help="one row per run (default: RESULTS/parallel_scaling.csv)")
     args = ap.parse_args()
     if not args.exe.is_file():
         sys.exit(f"{args.exe} is missing: build it first (./run.sh build)")
@@ -113,7 +122,7 @@ def main():
                     rows.append(row)
                     print(f"[{time.time() - started:6.0f} s] {name}: {row['status']}, "
                           f"{row['total_s']} s, {row['newton']} Newton iterations", flush=True)
-    with open(args.results / "parallel_scaling.csv", "w", newline="") as f:
+    with open(args.csv or args.results / "parallel_scaling.csv", "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
         w.writerows(rows)

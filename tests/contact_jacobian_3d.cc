@@ -7,8 +7,12 @@
 // every node perturbed at random; quasi-static (the weighted gaps) and
 // after one dynamic step (the persistency rows of held nodes). The
 // 'approximate' Jacobian, which drops the geometric stiffness, must differ.
-// Momentum: the contact forces on both bodies sum to zero, and so do their
-// moments (the normalized gaps are invariant under rigid motions), to
+// With Coulomb friction (mu = 0.3, random tangential multipliers so that
+// some active nodes stick and some slip) the same check covers the friction
+// forces (through the tangents of the nodal normals and the mortar matrices)
+// and the stick and slip rows (the slip rates, the slip direction). Momentum:
+// the contact forces on both bodies sum to zero, and so do their moments
+// (frictionless: the normalized gaps are invariant under rigid motions), to
 // round-off.
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
@@ -23,7 +27,9 @@ using ContactDynamics::VectorType;
 namespace
 {
   std::string
-  parameters(const std::string &scheme, const std::string &jacobian)
+  parameters(const std::string &scheme,
+             const std::string &jacobian,
+             const bool         friction)
   {
     // dynamic: the upper block hits the lower one from a small gap, so
     // that the nodes the first step brings into contact hold their gaps
@@ -63,8 +69,11 @@ subsection Contact
   set Formulation = mortar
   set Pairs = upper_bottom: lower_top
   set Initial penetration = allow
+  set Friction coefficients = )" +
+           (friction ? "0.3" : "0") + R"(
   subsection Mortar
     set c_n = 1e4
+    set c_t = 1
     set Jacobian = )" +
            jacobian + R"(
   end
@@ -80,10 +89,13 @@ end
   check(const std::string &name,
         const std::string &scheme,
         const std::string &jacobian,
-        const bool         held)
+        const bool         held,
+        const bool         friction = false)
   {
     ParameterHandler prm;
-    read_test_parameters("jacobian_3d.prm", parameters(scheme, jacobian), prm);
+    read_test_parameters("jacobian_3d.prm",
+                         parameters(scheme, jacobian, friction),
+                         prm);
     std::ostringstream            screen;
     ContactDynamics::Simulator<3> simulator(prm, screen);
     simulator.initialize();
@@ -94,6 +106,12 @@ end
     const std::set<types::global_dof_index> lambda(normal.begin(),
                                                    normal.end());
 
+    const auto *contact =
+      dynamic_cast<const ContactDynamics::SurfaceContact<3> *>(
+        simulator.get_contact());
+    std::set<types::global_dof_index> tangential;
+    for (const auto &dofs : contact->secondary_surface(0).dofs)
+      tangential.insert({dofs[4], dofs[5]});
     std::mt19937                           rng(5);
     std::uniform_real_distribution<double> uniform(-1., 1.);
     VectorType trial(simulator.displacement()), direction(trial), mask(trial);
@@ -101,7 +119,8 @@ end
     for (unsigned int i = 0; i < trial.size(); ++i)
       if (lambda.count(i))
         {
-          trial(i)     = 20 * (1.5 + uniform(rng));
+          trial(i) =
+            tangential.count(i) ? 10 * uniform(rng) : 20 * (1.5 + uniform(rng));
           direction(i) = 10 * uniform(rng);
           mask(i)      = 1. + uniform(rng);
         }
@@ -113,8 +132,8 @@ end
     constraints.set_zero(direction);
 
     // (round-off dominates the differences below: 1e-7 gives 1e-6)
-    VectorType  r(trial);
-    const auto  errors = contact_row_errors(simulator,
+    VectorType   r(trial);
+    const auto   errors   = contact_row_errors(simulator,
                                            trial,
                                            direction,
                                            mask,
@@ -122,14 +141,12 @@ end
                                            1e-6,
                                            0.01,
                                            r);
-    const auto *contact =
-      dynamic_cast<const ContactDynamics::SurfaceContact<3> *>(
-        simulator.get_contact());
-    unsigned int n_active = 0, n_held = 0;
+    unsigned int n_active = 0, n_held = 0, n_stick = 0;
     for (const auto &node : contact->node_states(0))
       {
         n_active += node.active;
         n_held += node.active && node.persistent;
+        n_stick += node.stick;
       }
 
     deallog << name << ": multiplier rows " << errors.n_multiplier_rows
@@ -139,6 +156,12 @@ end
                n_active > 3 && n_active < contact->node_states(0).size());
     if (held)
       check_true(name + ": held nodes in the checked state", n_held >= 3);
+    if (friction)
+      {
+        deallog << name << ": stick nodes " << n_stick << std::endl;
+        check_true(name + ": some active nodes stick, some slip",
+                   n_stick >= 3 && n_active - n_stick >= 3);
+      }
     const double multiplier_error = errors.multiplier_rows;
     const double force_error      = errors.force_rows;
     if (jacobian == "exact")
@@ -192,10 +215,11 @@ end
                 force.norm() / one_side.norm(),
                 0.,
                 1e-10);
-    check_close(name + ": |sum of contact moments| / |force on one body|",
-                moment.norm() / one_side.norm(),
-                0.,
-                1e-10);
+    if (!friction)
+      check_close(name + ": |sum of contact moments| / |force on one body|",
+                  moment.norm() / one_side.norm(),
+                  0.,
+                  1e-10);
   }
 } // namespace
 
@@ -206,4 +230,6 @@ main()
   check("quasi-static, exact", "quasi-static", "exact", false);
   check("quasi-static, approximate", "quasi-static", "approximate", false);
   check("held (persistency), exact", "newmark", "exact", true);
+  check("friction, quasi-static", "quasi-static", "exact", false, true);
+  check("friction, held", "newmark", "exact", true, true);
 }

@@ -272,15 +272,6 @@ namespace ContactDynamics
                                formulation_names.name(contact.formulation) +
                                ": node-to-segment contact is implemented in "
                                "2-D only so far; in 3-D set it to mortar."));
-        for (const ContactPair &pair : contact.pairs)
-          AssertThrow(pair.friction_coefficient == 0,
-                      ExcMessage("Contact/Friction coefficients: " +
-                                 (std::ostringstream()
-                                  << pair.friction_coefficient)
-                                   .str() +
-                                 " for the pair '" + pair.name +
-                                 "': friction is implemented in 2-D only so "
-                                 "far; in 3-D every coefficient must be 0."));
         AssertThrow(contact.monitored_points.empty(),
                     ExcMessage("Contact/Monitored points: the points are "
                                "'x, y' pairs, for 2-D only so far; in 3-D "

@@ -690,7 +690,9 @@ namespace ContactDynamics
         ContactAD::add_to(pair.gap[face[i]], sums.gap[i], unknowns);
         ContactAD::add_to(pair.weight[face[i]], sums.weight[i], unknowns);
         ContactAD::add_to(pair.gap_rate[face[i]], sums.gap_rate[i], unknowns);
-        ContactAD::add_to(pair.slip_rate[face[i]], sums.slip_rate[i], unknowns);
+        ContactAD::add_to(pair.slip_rate[face[i]][0],
+                          sums.slip_rate[i],
+                          unknowns);
       }
   }
 

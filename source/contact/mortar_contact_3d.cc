@@ -131,7 +131,8 @@ namespace ContactDynamics
                     const std::array<Vec3<Number>, 4> &ns,
                     const std::array<Vec3<Number>, 4> &xm,
                     const TriangleRule                &rule,
-                    SegmentVelocities                 *rates = nullptr)
+                    SegmentVelocities                 *rates  = nullptr,
+                    std::array<Number, 16>            *mortar = nullptr)
     {
       static_assert(n_out == n_moments || n_out == n_rate_moments);
       Assert((n_out == n_rate_moments) == (rates != nullptr),
@@ -141,8 +142,19 @@ namespace ContactDynamics
                   ExcInternalError());
       std::array<Number, n_out> moments;
       moments.fill(Number(0.));
+      if (mortar)
+        mortar->fill(Number(0.));
       for (const auto &q : points)
         {
+          // P_lk = sum N_l N_k^primary w, of the mortar matrix M = A P
+          if (mortar)
+            {
+              const auto Ns = shape(q.xi_s, q.eta_s);
+              const auto Nm = shape(q.xi_m, q.eta_m);
+              for (unsigned int l = 0; l < 4; ++l)
+                for (unsigned int k = 0; k < 4; ++k)
+                  (*mortar)[4 * l + k] += Ns[l] * Nm[k] * q.weight;
+            }
           const auto   Ns = shape(q.xi_s, q.eta_s);
           Vec3<Number> n;
           const Number g = point_gap(xs, ns, xm, q, n);
@@ -349,6 +361,27 @@ namespace ContactDynamics
       std::array<double, 4>              gap{}, weight{}, gap_rate{};
       std::vector<std::array<double, 4>> d_gap, d_weight, d_rate;
       std::vector<unsigned int> covering; // primary faces with a segment
+
+      // with friction: the dual basis A of the covered part and, per
+      // covering face, the moments P_lk = sum N_l N_k^primary w of the
+      // mortar matrix M = A P (l over the secondary face's nodes, k over
+      // the primary face's), with derivatives d_x[i]
+      using Matrix = std::array<std::array<double, 4>, 4>;
+      // the nodal normals, their derivatives in the ring positions (as in
+      // ring_normals()) and where the face's nodes are in the positions
+      std::array<Vec3<double>, 4> normal;
+      std::vector<double>         normal_gradient;
+      unsigned int                n_ring_positions = 0;
+      std::array<unsigned int, 4> secondary_index{};
+      Matrix                      A{};
+      std::vector<Matrix>         d_A;
+      struct Segment
+      {
+        std::array<unsigned int, 4> primary_index; // of x_k in the positions
+        Matrix                      P{};
+        std::vector<Matrix>         d_P;
+      };
+      std::vector<Segment> segments;
     };
 
     // The mortar integrals of face e over its segments with the candidate
@@ -369,6 +402,7 @@ namespace ContactDynamics
       const std::vector<double>                                   &velocity,
       const double                                                 c_v,
       const bool                                                   rates,
+      const bool                                                   friction,
       const double        minimum_fraction,
       const TriangleRule &rule)
     {
@@ -409,13 +443,17 @@ namespace ContactDynamics
       });
       std::array<unsigned int, 4> is, ip;
       const auto                  xs_d = corners(s, e, position, is);
-      const Vec3<double>          face_normal =
+      FaceFirstOrder              result;
+      result.normal           = normal;
+      result.normal_gradient  = normal_gradient;
+      result.n_ring_positions = 3 * n_ring;
+      result.secondary_index  = is;
+      const Vec3<double> face_normal =
         corner_normal(xs_d, 0) + corner_normal(xs_d, 3);
 
       // the moments summed over the segments, G[q n_x + i] = their
       // derivatives in position i, V[m n_x + i] = the rate moments' in
       // velocity i
-      FaceFirstOrder                     result;
       std::array<double, n_rate_moments> total{};
       std::vector<double>    G(n_rate_moments * n_x, 0.), V(4 * n_x, 0.);
       constexpr unsigned int n_v = 36;
@@ -453,9 +491,31 @@ namespace ContactDynamics
                   v.vs[a][d] = velocity[is[a] + d];
                   v.vm[a][d] = velocity[ip[a] + d];
                 }
-          const auto moments =
-            segment_moments<Segment, n_rate_moments>(xs, ns, xm, rule, &v);
+          std::array<Segment, 16> mortar;
+          const auto              moments =
+            segment_moments<Segment, n_rate_moments>(xs,
+                                                     ns,
+                                                     xm,
+                                                     rule,
+                                                     &v,
+                                                     friction ? &mortar :
+                                                                nullptr);
           const auto map = variable_map(is, ip, normal_gradient, 3 * n_ring);
+          if (friction)
+            {
+              FaceFirstOrder::Segment segment;
+              segment.primary_index = ip;
+              segment.d_P.assign(n_x, FaceFirstOrder::Matrix{});
+              for (unsigned int lk = 0; lk < 16; ++lk)
+                {
+                  segment.P[lk / 4][lk % 4] = mortar[lk].val();
+                  for (unsigned int w = 0; w < n_v; ++w)
+                    if (const double d = mortar[lk].fastAccessDx(w); d != 0)
+                      for (const auto &[i, y] : map[w])
+                        segment.d_P[i][lk / 4][lk % 4] += d * y;
+                }
+              result.segments.push_back(std::move(segment));
+            }
           for (unsigned int q = 0; q < n_rate_moments; ++q)
             {
               total[q] += moments[q].val();
@@ -480,6 +540,7 @@ namespace ContactDynamics
       if (result.covering.empty() || covered < minimum_fraction * area)
         {
           result.covering.clear();
+          result.segments.clear();
           return result;
         }
 
@@ -493,6 +554,19 @@ namespace ContactDynamics
       const auto rate = dual_sums(A, moments, n_moments);
       for (auto *d : {&result.d_gap, &result.d_weight, &result.d_rate})
         d->assign(n_x, {{0., 0., 0., 0.}});
+      if (friction)
+        {
+          result.d_A.assign(n_x, FaceFirstOrder::Matrix{});
+          for (unsigned int j = 0; j < 4; ++j)
+            for (unsigned int l = 0; l < 4; ++l)
+              {
+                result.A[j][l] = A[j][l].val();
+                for (unsigned int q = 0; q < n_moments; ++q)
+                  if (const double d = A[j][l].fastAccessDx(q); d != 0)
+                    for (unsigned int i = 0; i < n_x; ++i)
+                      result.d_A[i][j][l] += d * G[q * n_x + i];
+              }
+        }
       for (unsigned int j = 0; j < 4; ++j)
         {
           result.gap[j]      = gap[j].val();
@@ -516,6 +590,169 @@ namespace ContactDynamics
               for (unsigned int i = 0; i < n_x; ++i)
                 result.d_rate[i][j] -= c_v * A[j][m].val() * V[m * n_x + i];
         }
+      return result;
+    }
+
+    // The tangents t_1 = (a - (a.n) n) / |a - (a.n) n| and t_2 = n x t_1 of
+    // a unit normal n, a the coordinate axis `axis`
+    template <typename Number>
+    std::array<Vec3<Number>, 2>
+    tangent_basis(const Vec3<Number> &n, const unsigned int axis)
+    {
+      Vec3<Number> t;
+      t[axis] = 1.;
+      t -= Number(t * n) * n;
+      t /= norm(t);
+      return {{t, cross(n, t)}};
+    }
+
+    // The axis least aligned with a node's nodal normal in the reference
+    // configuration: its tangents (tangent_basis()) are smooth in the normal
+    // while it turns by less than 35 degrees (it starts 54.7 or more away
+    // from the axis)
+    unsigned int
+    tangent_axis(const Surface &s, const unsigned int node)
+    {
+      NodeMap<double> x;
+      for (const unsigned int f : s.node_faces[node])
+        for (const unsigned int k : s.faces[f])
+          x[k] = s.reference[k];
+      const auto   n    = nodal_normal(s, node, x);
+      unsigned int axis = 0;
+      for (unsigned int d = 1; d < 3; ++d)
+        if (std::abs(n[d]) < std::abs(n[axis]))
+          axis = d;
+      return axis;
+    }
+
+    // Coulomb friction on a face, with first derivatives: the forces of the
+    // tangential traction z_t = sum_j psi_j lambda_t,j on both sides
+    // (lambda_t,j = sum_a lambda_a,j t_a,j along node j's tangents),
+    // D_i lambda_t,i on the secondary nodes and -sum_j M_jk lambda_t,j on
+    // the primary ones, and the slip rates t_a,j . (D_j v_j - sum_k M_jk
+    // v_k) of the face's nodes (= int psi_j v_rel . t_a,j, by the
+    // biorthogonality of the dual basis on the covered part).
+    struct FrictionTerms
+    {
+      // per position i; d_force[i][l], l over the positions, then the 4
+      // normal and the 8 tangential multipliers (4 + 2 j + a)
+      std::vector<double>                               force;
+      std::vector<std::vector<double>>                  d_force;
+      std::array<std::array<double, 2>, 4>              slip{};
+      std::array<std::array<std::vector<double>, 2>, 4> d_slip;
+    };
+
+    FrictionTerms
+    friction_terms(const Surface                              &s,
+                   const unsigned int                          e,
+                   const FaceFirstOrder                       &sums,
+                   const std::vector<double>                  &velocity,
+                   const double                                c_v,
+                   const std::array<std::array<double, 2>, 4> &lambda)
+    {
+      const unsigned int n  = velocity.size();
+      const unsigned int nr = sums.n_ring_positions;
+      const auto        &is = sums.secondary_index;
+      // tangents t[j][a] and their derivatives dt[j][a][c][i], i < nr
+      std::array<std::array<Vec3<double>, 2>, 4>                       t;
+      std::array<std::array<std::array<std::vector<double>, 3>, 2>, 4> dt;
+      // lambda_t,j and its derivatives in the ring positions
+      std::array<Vec3<double>, 4>                       lt;
+      std::array<std::array<std::vector<double>, 3>, 4> dlt;
+      using N3 = Sacado::Fad::SFad<double, 3>;
+      for (unsigned int j = 0; j < 4; ++j)
+        {
+          Vec3<N3> normal;
+          for (unsigned int c = 0; c < 3; ++c)
+            normal[c] = N3(3, c, sums.normal[j][c]);
+          const auto basis =
+            tangent_basis(normal, tangent_axis(s, s.faces[e][j]));
+          for (unsigned int c = 0; c < 3; ++c)
+            dlt[j][c].assign(nr, 0.);
+          for (unsigned int a = 0; a < 2; ++a)
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                t[j][a][c] = basis[a][c].val();
+                dt[j][a][c].assign(nr, 0.);
+                for (unsigned int b = 0; b < 3; ++b)
+                  if (const double d = basis[a][c].fastAccessDx(b); d != 0)
+                    for (unsigned int i = 0; i < nr; ++i)
+                      dt[j][a][c][i] +=
+                        d * sums.normal_gradient[(3 * j + b) * nr + i];
+                lt[j][c] += lambda[j][a] * t[j][a][c];
+                for (unsigned int i = 0; i < nr; ++i)
+                  dlt[j][c][i] += lambda[j][a] * dt[j][a][c][i];
+              }
+        }
+
+      FrictionTerms result;
+      result.force.assign(n, 0.);
+      result.d_force.assign(n, std::vector<double>(n + 12, 0.));
+      for (unsigned int j = 0; j < 4; ++j)
+        for (unsigned int a = 0; a < 2; ++a)
+          result.d_slip[j][a].assign(n, 0.);
+      const auto multiplier = [&](const unsigned int j, const unsigned int a) {
+        return n + 4 + 2 * j + a;
+      };
+      // adds node k's force -factor lambda_t,j (factor: -D_j or M_jk, with
+      // derivatives d_factor) and its part of node j's slip rates
+      const auto add = [&](const unsigned int         j,
+                           const unsigned int         first, // of x_k
+                           const double               factor,
+                           const std::vector<double> &d_factor) {
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            auto &row = result.d_force[first + c];
+            result.force[first + c] -= factor * lt[j][c];
+            for (unsigned int i = 0; i < n; ++i)
+              row[i] -= d_factor[i] * lt[j][c];
+            for (unsigned int i = 0; i < nr; ++i)
+              row[i] -= factor * dlt[j][c][i];
+            for (unsigned int a = 0; a < 2; ++a)
+              row[multiplier(j, a)] -= factor * t[j][a][c];
+          }
+        for (unsigned int a = 0; a < 2; ++a)
+          {
+            auto  &d  = result.d_slip[j][a];
+            double tv = 0;
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                const double v = velocity[first + c];
+                tv += t[j][a][c] * v;
+                for (unsigned int i = 0; i < nr; ++i)
+                  d[i] -= factor * dt[j][a][c][i] * v;
+                d[first + c] -= c_v * factor * t[j][a][c];
+              }
+            result.slip[j][a] -= factor * tv;
+            for (unsigned int i = 0; i < n; ++i)
+              d[i] -= d_factor[i] * tv;
+          }
+      };
+
+      // the secondary nodes: D_j
+      std::vector<double> d_factor(n);
+      for (unsigned int j = 0; j < 4; ++j)
+        {
+          for (unsigned int i = 0; i < n; ++i)
+            d_factor[i] = -sums.d_weight[i][j];
+          add(j, is[j], -sums.weight[j], d_factor);
+        }
+      // the primary nodes: M_jk = sum_l A_jl P_lk per segment
+      for (const auto &segment : sums.segments)
+        for (unsigned int j = 0; j < 4; ++j)
+          for (unsigned int k = 0; k < 4; ++k)
+            {
+              double M = 0;
+              std::fill(d_factor.begin(), d_factor.end(), 0.);
+              for (unsigned int l = 0; l < 4; ++l)
+                {
+                  M += sums.A[j][l] * segment.P[l][k];
+                  for (unsigned int i = 0; i < n; ++i)
+                    d_factor[i] += sums.d_A[i][j][l] * segment.P[l][k] +
+                                   sums.A[j][l] * segment.d_P[i][l][k];
+                }
+              add(j, segment.primary_index[k], M, d_factor);
+            }
       return result;
     }
 
@@ -704,9 +941,13 @@ namespace ContactDynamics
     for (const unsigned int n : primary_nodes(pair, primary_faces))
       for (unsigned int d = 0; d < 3; ++d)
         unknowns.push_back(pair.primary.dofs[n][d]);
-    // the normal multipliers (frictionless)
+    // the normal multipliers, then the tangential ones (with friction)
     for (const unsigned int n : pair.secondary.faces[e])
       unknowns.push_back(pair.secondary.dofs[n][3]);
+    if (pair.friction_coefficient > 0)
+      for (const unsigned int n : pair.secondary.faces[e])
+        for (const unsigned int c : {4, 5})
+          unknowns.push_back(pair.secondary.dofs[n][c]);
     return unknowns;
   }
 
@@ -723,6 +964,7 @@ namespace ContactDynamics
     const bool  exact    = this->complementarity.exact_jacobian;
     const auto  unknowns = patch_unknowns(pair, e, pair.candidates[e]);
     const bool  rates = this->complementarity.holds_contact() && state.dynamic;
+    const bool  friction     = pair.friction_coefficient > 0;
     const TriangleRule &rule = triangle_rule(quadrature_points);
 
     std::vector<std::pair<const Surface *, unsigned int>> nodes;
@@ -752,6 +994,7 @@ namespace ContactDynamics
                                        velocity,
                                        state.c_v,
                                        rates,
+                                       friction,
                                        minimum_covered_fraction,
                                        rule);
     const auto &covering = sums.covering;
@@ -806,5 +1049,35 @@ namespace ContactDynamics
                            direction,
                            hessian,
                            [](unsigned int, auto &) {});
+    if (!friction)
+      return;
+
+    std::array<std::array<double, 2>, 4> lambda_t;
+    for (unsigned int j = 0; j < 4; ++j)
+      for (unsigned int a = 0; a < 2; ++a)
+        lambda_t[j][a] = state.u(unknowns[n_positions + 4 + 2 * j + a]);
+    const FrictionTerms f =
+      friction_terms(s, e, sums, velocity, state.c_v, lambda_t);
+    for (unsigned int i = 0; i < n_positions; ++i)
+      {
+        typename PatchForces::Derivatives derivatives;
+        for (unsigned int l = 0; l < f.d_force[i].size(); ++l)
+          if (f.d_force[i][l] != 0)
+            derivatives.emplace_back(unknowns[l], f.d_force[i][l]);
+        if (f.force[i] != 0 || !derivatives.empty())
+          {
+            forces.add(unknowns[i], f.force[i], std::move(derivatives));
+            forces.add_tangential(unknowns[i], f.force[i]);
+          }
+      }
+    for (unsigned int j = 0; j < 4; ++j)
+      for (unsigned int a = 0; a < 2; ++a)
+        {
+          LinearizedValue &slip = pair.slip_rate[face[j]][a];
+          slip.value += f.slip[j][a];
+          for (unsigned int i = 0; i < n_positions; ++i)
+            if (f.d_slip[j][a][i] != 0)
+              slip.derivatives[unknowns[i]] += f.d_slip[j][a][i];
+        }
   }
 } // namespace ContactDynamics

@@ -308,7 +308,9 @@ namespace ContactDynamics
                           AD(-(v_rel * n_secondary)),
                           unknowns);
         if (friction)
-          ContactAD::add_to(pair.slip_rate[j], AD(v_rel * tangent), unknowns);
+          ContactAD::add_to(pair.slip_rate[j][0],
+                            AD(v_rel * tangent),
+                            unknowns);
       }
 
     // the nodal force L (lambda n + lambda_t t), with the secondary side's

@@ -20,6 +20,19 @@ namespace ContactDynamics
 {
   namespace
   {
+    // What the patches add up at a node j of a pair
+    template <typename PairData>
+    std::vector<LinearizedValue *>
+    node_sums(PairData &pair, const unsigned int j)
+    {
+      std::vector<LinearizedValue *> sums{&pair.gap[j],
+                                          &pair.weight[j],
+                                          &pair.gap_rate[j]};
+      for (auto &v : pair.slip_rate[j])
+        sums.push_back(&v);
+      return sums;
+    }
+
     // Adds factor times the derivatives in unconstrained columns to a row
     // of the Jacobian in one call: entry by entry, the matrix's index
     // searches cost as much as the 3-D mortar patches.
@@ -305,14 +318,13 @@ namespace ContactDynamics
                                "' has an empty surface."));
         pair.nodes.assign(pair.secondary.n_nodes(), NodeState());
         pair.friction_coefficient = contact.pairs[p].friction_coefficient;
-        // (create_contact_formulation() allows friction in 2-D only)
-        Assert(dim == 2 || pair.friction_coefficient == 0, ExcNotImplemented());
         for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
           {
             secondary_normal.insert(pair.secondary.dofs[j][dim]);
-            // the tangential multiplier is an unknown only with friction
+            // the tangential multipliers are unknowns only with friction
             if (pair.friction_coefficient > 0)
-              secondary_normal.insert(pair.secondary.dofs[j][dim + 1]);
+              for (unsigned int c = dim + 1; c < 2 * dim; ++c)
+                secondary_normal.insert(pair.secondary.dofs[j][c]);
           }
         friction = friction || pair.friction_coefficient > 0;
 
@@ -525,7 +537,8 @@ namespace ContactDynamics
               group.displacements.push_back(pair.secondary.dofs[j][d]);
             group.multipliers.push_back(pair.secondary.dofs[j][dim]);
             if (pair.friction_coefficient > 0)
-              group.multipliers.push_back(pair.secondary.dofs[j][dim + 1]);
+              for (unsigned int c = dim + 1; c < 2 * dim; ++c)
+                group.multipliers.push_back(pair.secondary.dofs[j][c]);
             groups.push_back(std::move(group));
           }
     return groups;
@@ -677,68 +690,105 @@ namespace ContactDynamics
                                          const VectorType      &u,
                                          const LinearSystem    &system)
   {
-    // Coulomb friction (paper equation 8) in its semi-smooth form: with
+    // Coulomb friction (paper equation 8) in its semi-smooth form, for the
+    // vector lambda_t of the dim - 1 tangential multipliers: with
     // xi = lambda_n - c_n g (the normal argument) and s = lambda_t + c_t v,
     //   inactive:           lambda_t = 0
     //   stick (|s| < mu xi): v = 0 (written c_t v = 0)
-    //   slip:               lambda_t - mu xi sign(s) = 0
-    NodeState                    &node     = pair.nodes[j];
-    const types::global_dof_index row      = pair.secondary.dofs[j][dim + 1];
-    const double                  scale    = pair.secondary.reference_weight[j];
-    const double                  mu       = pair.friction_coefficient;
-    const double                  lambda_n = u(pair.secondary.dofs[j][dim]);
-    const double                  lambda_t = u(row);
-
-    // normalized slip rate
-    LinearizedValue v;
-    const double    w =
+    //   slip:               lambda_t - mu xi s / |s| = 0
+    // (the slip direction from the trial traction s, as in Hueeber, Stadler
+    // and Wohlmuth 2008; in 2-D s / |s| is its sign)
+    constexpr unsigned int        n_t   = dim - 1;
+    NodeState                    &node  = pair.nodes[j];
+    const double                  scale = pair.secondary.reference_weight[j];
+    const double                  mu    = pair.friction_coefficient;
+    const types::global_dof_index normal_row = pair.secondary.dofs[j][dim];
+    const double                  lambda_n   = u(normal_row);
+    std::array<types::global_dof_index, n_t> rows;
+    std::array<double, n_t>                  lambda_t;
+    // normalized slip rates
+    std::array<LinearizedValue, n_t> v;
+    const double                     w =
       (complementarity.normalize_c_n && node.projected) ? node.weight : 1.;
-    v.value = pair.slip_rate[j].value / w;
-    for (const auto &d : pair.slip_rate[j].derivatives)
-      v.derivatives[d.first] += d.second / w;
-    if (complementarity.normalize_c_n && node.projected)
-      for (const auto &d : pair.weight[j].derivatives)
-        v.derivatives[d.first] -= pair.slip_rate[j].value * d.second / (w * w);
-    node.tangential = lambda_t * traction_per_multiplier(pair, j, u);
-    node.slip_rate  = v.value;
-    node.stick      = false;
-    if (system.constraints.is_constrained(row))
+    for (unsigned int a = 0; a < n_t; ++a)
+      {
+        rows[a]                     = pair.secondary.dofs[j][dim + 1 + a];
+        lambda_t[a]                 = u(rows[a]);
+        const LinearizedValue &slip = pair.slip_rate[j][a];
+        v[a].value                  = slip.value / w;
+        for (const auto &d : slip.derivatives)
+          v[a].derivatives[d.first] += d.second / w;
+        if (complementarity.normalize_c_n && node.projected)
+          for (const auto &d : pair.weight[j].derivatives)
+            v[a].derivatives[d.first] -= slip.value * d.second / (w * w);
+        node.tangential[a] = lambda_t[a] * traction_per_multiplier(pair, j, u);
+        node.slip_rate[a]  = v[a].value;
+      }
+    node.stick = false;
+    if (system.constraints.is_constrained(rows[0]))
       return;
 
-    const double xi = lambda_n - constraint.value;
-    const double s  = lambda_t + complementarity.c_t * v.value;
+    const double            xi = lambda_n - constraint.value;
+    std::array<double, n_t> trial;
+    double                  trial_norm = 0;
+    for (unsigned int a = 0; a < n_t; ++a)
+      {
+        trial[a] = lambda_t[a] + complementarity.c_t * v[a].value;
+        trial_norm += trial[a] * trial[a];
+      }
+    trial_norm = std::sqrt(trial_norm);
     if (!active)
       {
-        system.residual(row) += scale * lambda_t;
-        if (system.with_jacobian)
-          system.jacobian.add(row, row, scale);
+        for (unsigned int a = 0; a < n_t; ++a)
+          {
+            system.residual(rows[a]) += scale * lambda_t[a];
+            if (system.with_jacobian)
+              system.jacobian.add(rows[a], rows[a], scale);
+          }
         return;
       }
-    if (std::abs(s) < mu * xi)
+    if (trial_norm < mu * xi)
       {
         node.stick = true;
         ++n_stick;
-        system.residual(row) += scale * complementarity.c_t * v.value;
-        if (system.with_jacobian)
-          add_row(system.jacobian,
-                  system.constraints,
-                  row,
-                  v.derivatives,
-                  scale * complementarity.c_t);
+        for (unsigned int a = 0; a < n_t; ++a)
+          {
+            system.residual(rows[a]) +=
+              scale * complementarity.c_t * v[a].value;
+            if (system.with_jacobian)
+              add_row(system.jacobian,
+                      system.constraints,
+                      rows[a],
+                      v[a].derivatives,
+                      scale * complementarity.c_t);
+          }
         return;
       }
     ++n_slip;
-    const double sign = s > 0 ? 1. : -1.;
-    system.residual(row) += scale * (lambda_t - mu * xi * sign);
-    if (system.with_jacobian)
+    // d(s / |s|)/ds = (I - e e^T) / |s|, e = s / |s|: zero in 2-D
+    std::array<double, n_t> e;
+    for (unsigned int a = 0; a < n_t; ++a)
+      e[a] = trial[a] / trial_norm;
+    for (unsigned int a = 0; a < n_t; ++a)
       {
-        system.jacobian.add(row, row, scale);
-        const types::global_dof_index normal_row = pair.secondary.dofs[j][dim];
-        if (!system.constraints.is_constrained(normal_row))
-          system.jacobian.add(row, normal_row, -scale * mu * sign);
+        system.residual(rows[a]) += scale * (lambda_t[a] - mu * xi * e[a]);
+        if (!system.with_jacobian)
+          continue;
+        std::map<types::global_dof_index, double> row;
+        row[rows[a]] += 1.;
+        row[normal_row] -= mu * e[a];
         for (const auto &d : constraint.derivatives)
-          if (!system.constraints.is_constrained(d.first))
-            system.jacobian.add(row, d.first, scale * mu * sign * d.second);
+          row[d.first] += mu * e[a] * d.second;
+        if constexpr (dim == 3)
+          for (unsigned int b = 0; b < n_t; ++b)
+            {
+              const double curvature =
+                -mu * xi * ((a == b ? 1. : 0.) - e[a] * e[b]) / trial_norm;
+              row[rows[b]] += curvature;
+              for (const auto &d : v[b].derivatives)
+                row[d.first] += curvature * complementarity.c_t * d.second;
+            }
+        add_row(system.jacobian, system.constraints, rows[a], row, scale);
       }
   }
 
@@ -791,7 +841,7 @@ namespace ContactDynamics
     pair.gap.assign(n_nodes, LinearizedValue());
     pair.weight.assign(n_nodes, LinearizedValue());
     pair.gap_rate.assign(n_nodes, LinearizedValue());
-    pair.slip_rate.assign(n_nodes, LinearizedValue());
+    pair.slip_rate.assign(n_nodes, {});
     for (unsigned int p = 0; p < n_patches(pair); ++p)
       if (pair.assembled_patch[p])
         {
@@ -814,10 +864,7 @@ namespace ContactDynamics
     for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
       if (!pair.owned_node[j])
         {
-          auto quantities = {&pair.gap[j],
-                             &pair.weight[j],
-                             &pair.gap_rate[j],
-                             &pair.slip_rate[j]};
+          const auto quantities = node_sums(pair, j);
           if (std::all_of(quantities.begin(), quantities.end(), [](auto *q) {
                 return q->value == 0 && q->derivatives.empty();
               }))
@@ -839,10 +886,7 @@ namespace ContactDynamics
         {
           const unsigned int j = std::lround(*x++);
           Assert(pair.owned_node[j], ExcInternalError());
-          for (LinearizedValue *q : {&pair.gap[j],
-                                     &pair.weight[j],
-                                     &pair.gap_rate[j],
-                                     &pair.slip_rate[j]})
+          for (LinearizedValue *q : node_sums(pair, j))
             {
               q->value += *x++;
               const long n = std::lround(*x++);
@@ -909,7 +953,7 @@ namespace ContactDynamics
   {
     // each node's state comes from the process that owns it; a sum over
     // processes of the owned entries (zeros elsewhere) gathers them
-    constexpr unsigned int n_fields = 8;
+    constexpr unsigned int n_fields = 10;
     std::vector<double>    data;
     for (const auto &pair : pairs)
       for (unsigned int j = 0; j < pair.nodes.size(); ++j)
@@ -920,8 +964,10 @@ namespace ContactDynamics
                         {n.gap,
                          n.weight,
                          n.pressure,
-                         n.tangential,
-                         n.slip_rate,
+                         n.tangential[0],
+                         n.tangential[1],
+                         n.slip_rate[0],
+                         n.slip_rate[1],
                          double(n.projected),
                          double(n.active),
                          double(n.stick)});
@@ -936,11 +982,11 @@ namespace ContactDynamics
           n.gap        = x[0];
           n.weight     = x[1];
           n.pressure   = x[2];
-          n.tangential = x[3];
-          n.slip_rate  = x[4];
-          n.projected  = x[5] > 0.5;
-          n.active     = x[6] > 0.5;
-          n.stick      = x[7] > 0.5;
+          n.tangential = {{x[3], x[4]}};
+          n.slip_rate  = {{x[5], x[6]}};
+          n.projected  = x[7] > 0.5;
+          n.active     = x[8] > 0.5;
+          n.stick      = x[9] > 0.5;
           x += n_fields;
         }
   }

@@ -102,7 +102,8 @@ namespace ContactDynamics
                                      std::ostream                  &out) const
   {
     out << "pair,node,x,y," << (dim == 3 ? "z," : "")
-        << "gap,pressure,active,tangential_traction,stick\n";
+        << "gap,pressure,active,tangential_traction,"
+        << (dim == 3 ? "tangential_traction_2," : "") << "stick\n";
     for (unsigned int p = 0; p < contact.n_pairs(); ++p)
       {
         const SecondaryNodes<dim> nodes = contact.secondary_nodes(p);
@@ -125,8 +126,10 @@ namespace ContactDynamics
             for (unsigned int d = 0; d < dim; ++d)
               out << x[d] << ',';
             out << node.normalized_gap() << ',' << node.pressure << ','
-                << node.active << ',' << node.tangential << ',' << node.stick
-                << '\n';
+                << node.active << ',';
+            for (unsigned int a = 0; a + 1 < dim; ++a)
+              out << node.tangential[a] << ',';
+            out << node.stick << '\n';
           }
       }
   }

@@ -71,15 +71,17 @@ namespace ContactDynamics
   /** The state of a secondary node after an assembly. */
   struct ContactNodeState
   {
-    double gap        = 0; // weighted (mortar) or pointwise gap
-    double weight     = 0; // its normalization; 0: no projection
-    double pressure   = 0; // lambda_n
-    double tangential = 0; // lambda_t (friction)
-    double slip_rate  = 0; // normalized relative tangential velocity
-    bool   projected  = false;
-    bool   active     = false;
-    bool   stick      = false; // active and sticking (friction)
-    bool   persistent = false; // holds its gap (rate) in the next step
+    double gap      = 0; // weighted (mortar) or pointwise gap
+    double weight   = 0; // its normalization; 0: no projection
+    double pressure = 0; // lambda_n
+    // lambda_t (friction) and the normalized relative tangential velocity
+    // along the node's tangents (one in 2-D, two in 3-D)
+    std::array<double, 2> tangential = {{0., 0.}};
+    std::array<double, 2> slip_rate  = {{0., 0.}};
+    bool                  projected  = false;
+    bool                  active     = false;
+    bool                  stick      = false; // active and sticking (friction)
+    bool persistent = false; // holds its gap (rate) in the next step
     // the normalized gap's Newmark rate and second rate at this state, and
     // the normalized gap with its rates at the last committed step
     double gap_rate = 0, gap_acceleration = 0;

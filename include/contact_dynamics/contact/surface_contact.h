@@ -14,6 +14,7 @@
 #include <contact_dynamics/contact/contact_surface.h>
 #include <contact_dynamics/contact/contact_work.h>
 
+#include <array>
 #include <map>
 #include <utility>
 #include <vector>
@@ -225,9 +226,11 @@ namespace ContactDynamics
       std::vector<std::vector<unsigned int>> pattern;    // in the sparsity
       std::vector<NodeState>                 nodes;
       // per secondary node: gap, its normalization weight, gap rate,
-      // relative tangential velocity (secondary minus primary)
-      std::vector<LinearizedValue> gap, weight, gap_rate, slip_rate;
-      double                       friction_coefficient = 0;
+      // relative tangential velocity (secondary minus primary) along the
+      // node's dim - 1 tangents
+      std::vector<LinearizedValue>                      gap, weight, gap_rate;
+      std::vector<std::array<LinearizedValue, dim - 1>> slip_rate;
+      double friction_coefficient = 0;
       // in parallel: the nodes whose multipliers this process owns, the
       // patches that touch them (whose candidates and couplings it needs)
       // and the patches it computes (an equal share of all: the contact
