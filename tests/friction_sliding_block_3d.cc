@@ -220,6 +220,7 @@ subsection Contact
   subsection Mortar
     set c_n = 1e4
     set c_t = 100
+    set Jacobian = approximate
   end
 end
 subsection Output
