@@ -80,12 +80,14 @@ namespace
     return worst;
   }
 
+  template <int dim = 2>
   void
   compare(const std::string &name,
           const std::string &file,
           Changes            changes,
           const double       tolerance = 1e-7)
   {
+    using Sim            = ContactDynamics::Simulator<dim>;
     const MPI_Comm world = MPI_COMM_WORLD;
     changes.emplace_back("Output/VTU interval", "0");
     Changes parallel_changes = changes, serial_changes = changes;

@@ -274,6 +274,24 @@ namespace ContactDynamics
       return Sacado::Fad::SFad<Inner, n>(n, k, Inner(n, k, value));
     }
 
+    // Where each of a patch's nodes has its first position (3 k), and how
+    // many of them are secondary (the ring, which comes first)
+    std::map<std::pair<const Surface *, unsigned int>, unsigned int>
+    position_index(
+      const Surface                                               &s,
+      const std::vector<std::pair<const Surface *, unsigned int>> &nodes,
+      unsigned int                                                &n_ring)
+    {
+      std::map<std::pair<const Surface *, unsigned int>, unsigned int> index;
+      n_ring = 0;
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        {
+          index[nodes[k]] = 3 * k;
+          n_ring += nodes[k].first == &s;
+        }
+      return index;
+    }
+
     // The nodal normals of face e and their derivatives in the positions of
     // the ring of secondary nodes around it (the first 3 n_ring entries of
     // `position`, in the order of `nodes`): gradient[(3 a + c) 3 n_ring + i]
@@ -406,17 +424,12 @@ namespace ContactDynamics
       const double        minimum_fraction,
       const TriangleRule &rule)
     {
-      const auto        &s   = pair.secondary;
-      const auto        &p   = pair.primary;
-      const unsigned int n_x = position.size();
-      std::map<std::pair<const Surface *, unsigned int>, unsigned int> index;
-      unsigned int n_ring = 0;
-      for (unsigned int k = 0; k < nodes.size(); ++k)
-        {
-          index[nodes[k]] = 3 * k;
-          n_ring += nodes[k].first == &s;
-        }
-      const auto corners = [&](const Surface               &surface,
+      const auto        &s       = pair.secondary;
+      const auto        &p       = pair.primary;
+      const unsigned int n_x     = position.size();
+      unsigned int       n_ring  = 0;
+      const auto         index   = position_index(s, nodes, n_ring);
+      const auto         corners = [&](const Surface               &surface,
                                const unsigned int           f,
                                const auto                  &x,
                                std::array<unsigned int, 4> &first) {
@@ -602,13 +615,22 @@ namespace ContactDynamics
       Vec3<Number> t;
       t[axis] = 1.;
       t -= Number(t * n) * n;
+      // (|t| starts at 0.82 or more: below 0.3 the normal has turned to
+      // within 17 degrees of the axis and the basis is ill-conditioned)
+      AssertThrow(value_of(norm(t)) > 0.3,
+                  ExcMessage("3-D friction: a secondary node's normal has "
+                             "turned by more than about 37 degrees from its "
+                             "reference direction, towards the axis its "
+                             "tangents are built from (doc/contact.md, '3-D "
+                             "friction'); tangent bases that follow large "
+                             "rotations are not implemented yet."));
       t /= norm(t);
       return {{t, cross(n, t)}};
     }
 
     // The axis least aligned with a node's nodal normal in the reference
     // configuration: its tangents (tangent_basis()) are smooth in the normal
-    // while it turns by less than 35 degrees (it starts 54.7 or more away
+    // while it turns by less than 37 degrees (it starts 54.7 or more away
     // from the axis)
     unsigned int
     tangent_axis(const Surface &s, const unsigned int node)
@@ -785,13 +807,8 @@ namespace ContactDynamics
       const auto        &face = s.faces[e];
       const unsigned int n_x  = position.size();
       // the index of a node's first position in `position`
-      std::map<std::pair<const Surface *, unsigned int>, unsigned int> index;
       unsigned int n_ring = 0;
-      for (unsigned int k = 0; k < nodes.size(); ++k)
-        {
-          index[nodes[k]] = 3 * k;
-          n_ring += nodes[k].first == &s;
-        }
+      const auto   index  = position_index(s, nodes, n_ring);
 
       // (1) nodal normals in the ring positions (the first 3 n_ring)
       std::array<Vec3<double>, 4> normal;

@@ -747,7 +747,8 @@ namespace ContactDynamics
           }
         return;
       }
-    if (trial_norm < mu * xi)
+    // (|s| = 0 sticks: active means xi > 0, unless mu xi underflows)
+    if (trial_norm < mu * xi || trial_norm == 0)
       {
         node.stick = true;
         ++n_stick;
@@ -810,6 +811,16 @@ namespace ContactDynamics
                               residual,
                               jacobian,
                               residual_full};
+    // (every pair's sums exist before any patch can fail: the exchange
+    // runs anyway)
+    for (auto &pair : pairs)
+      {
+        const unsigned int n_nodes = pair.secondary.n_nodes();
+        pair.gap.assign(n_nodes, LinearizedValue());
+        pair.weight.assign(n_nodes, LinearizedValue());
+        pair.gap_rate.assign(n_nodes, LinearizedValue());
+        pair.slip_rate.assign(n_nodes, {});
+      }
     run_collectively(
       comm,
       [&]() {
@@ -837,11 +848,6 @@ namespace ContactDynamics
                                         const TrialState   &state,
                                         const LinearSystem &system)
   {
-    const unsigned int n_nodes = pair.secondary.n_nodes();
-    pair.gap.assign(n_nodes, LinearizedValue());
-    pair.weight.assign(n_nodes, LinearizedValue());
-    pair.gap_rate.assign(n_nodes, LinearizedValue());
-    pair.slip_rate.assign(n_nodes, {});
     for (unsigned int p = 0; p < n_patches(pair); ++p)
       if (pair.assembled_patch[p])
         {

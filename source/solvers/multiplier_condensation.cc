@@ -339,6 +339,7 @@ namespace ContactDynamics
       int     n       = 0;
       double *values  = nullptr;
       int    *indices = nullptr;
+      Assert(matrix.LRID(static_cast<int>(row)) >= 0, ExcInternalError());
       matrix.ExtractMyRowView(matrix.LRID(static_cast<int>(row)),
                               n,
                               values,
