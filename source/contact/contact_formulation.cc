@@ -264,20 +264,12 @@ namespace ContactDynamics
     prm.leave_subsection();
 
     if (dim == 3)
-      {
-        // (what 3-D contact does not have yet; issue 17)
-        AssertThrow(contact.formulation !=
-                      ContactParameters::Formulation::node_to_segment,
-                    ExcMessage("Contact/Formulation = " +
-                               formulation_names.name(contact.formulation) +
-                               ": node-to-segment contact is implemented in "
-                               "2-D only so far; in 3-D set it to mortar."));
-        AssertThrow(contact.monitored_points.empty(),
-                    ExcMessage("Contact/Monitored points: the points are "
-                               "'x, y' pairs, for 2-D only so far; in 3-D "
-                               "leave the entry empty (contact_surface-*.csv "
-                               "has every secondary node)."));
-      }
+      // (what 3-D contact does not have yet; issue 17)
+      AssertThrow(contact.monitored_points.empty(),
+                  ExcMessage("Contact/Monitored points: the points are "
+                             "'x, y' pairs, for 2-D only so far; in 3-D "
+                             "leave the entry empty (contact_surface-*.csv "
+                             "has every secondary node)."));
 
     switch (contact.formulation)
       {

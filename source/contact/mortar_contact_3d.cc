@@ -8,6 +8,7 @@
 #include <contact_dynamics/contact/clipping_geometry.h>
 #include <contact_dynamics/contact/contact_ad.h>
 #include <contact_dynamics/contact/mortar_contact.h>
+#include <contact_dynamics/contact/surface_geometry_3d.h>
 
 #include <algorithm>
 #include <map>
@@ -18,13 +19,9 @@ namespace ContactDynamics
   namespace
   {
     using namespace ClippingGeometry;
-    using Surface = ContactSurface<3>;
 
     // clipping tolerance, relative to the secondary face's diameter
     constexpr double clip_tolerance = 1e-10;
-
-    template <typename Number>
-    using NodeMap = std::map<unsigned int, Vec3<Number>>;
 
     // positions (and velocities) of the nodes a face's integrals read: the
     // secondary nodes of the faces around the face's nodes (their nodal
@@ -34,56 +31,6 @@ namespace ContactDynamics
     {
       NodeMap<Number> xs, vs, xp, vp;
     };
-
-    template <typename Number>
-    std::array<Vec3<Number>, 4>
-    face_nodes(const Surface         &surface,
-               const unsigned int     face,
-               const NodeMap<Number> &x)
-    {
-      std::array<Vec3<Number>, 4> result;
-      for (unsigned int a = 0; a < 4; ++a)
-        result[a] = x.at(surface.faces[face][a]);
-      return result;
-    }
-
-    // the average of the unit corner normals of the faces at a node
-    template <typename Number>
-    Vec3<Number>
-    nodal_normal(const Surface         &s,
-                 const unsigned int     node,
-                 const NodeMap<Number> &xs)
-    {
-      std::vector<Vec3<Number>> corners;
-      for (const unsigned int f : s.node_faces[node])
-        {
-          const auto &nodes = s.faces[f];
-          const auto  a =
-            std::find(nodes.begin(), nodes.end(), node) - nodes.begin();
-          corners.push_back(corner_normal(face_nodes(s, f, xs), a));
-        }
-      return averaged_normal(corners);
-    }
-
-    template <typename Number>
-    Vec3<double>
-    values(const Vec3<Number> &x)
-    {
-      Vec3<double> v;
-      for (unsigned int d = 0; d < 3; ++d)
-        v[d] = value_of(x[d]);
-      return v;
-    }
-
-    template <typename Number>
-    std::array<Vec3<double>, 4>
-    values(const std::array<Vec3<Number>, 4> &x)
-    {
-      std::array<Vec3<double>, 4> v;
-      for (unsigned int a = 0; a < 4; ++a)
-        v[a] = values(x[a]);
-      return v;
-    }
 
     // the nodes whose positions a face's integrals read
     template <typename PairData>
@@ -604,47 +551,6 @@ namespace ContactDynamics
                 result.d_rate[i][j] -= c_v * A[j][m].val() * V[m * n_x + i];
         }
       return result;
-    }
-
-    // The tangents t_1 = (a - (a.n) n) / |a - (a.n) n| and t_2 = n x t_1 of
-    // a unit normal n, a the coordinate axis `axis`
-    template <typename Number>
-    std::array<Vec3<Number>, 2>
-    tangent_basis(const Vec3<Number> &n, const unsigned int axis)
-    {
-      Vec3<Number> t;
-      t[axis] = 1.;
-      t -= Number(t * n) * n;
-      // (|t| starts at 0.82 or more: below 0.3 the normal has turned to
-      // within 17 degrees of the axis and the basis is ill-conditioned)
-      AssertThrow(value_of(norm(t)) > 0.3,
-                  ExcMessage("3-D friction: a secondary node's normal has "
-                             "turned by more than about 37 degrees from its "
-                             "reference direction, towards the axis its "
-                             "tangents are built from (doc/contact.md, '3-D "
-                             "friction'); tangent bases that follow large "
-                             "rotations are not implemented yet."));
-      t /= norm(t);
-      return {{t, cross(n, t)}};
-    }
-
-    // The axis least aligned with a node's nodal normal in the reference
-    // configuration: its tangents (tangent_basis()) are smooth in the normal
-    // while it turns by less than 37 degrees (it starts 54.7 or more away
-    // from the axis)
-    unsigned int
-    tangent_axis(const Surface &s, const unsigned int node)
-    {
-      NodeMap<double> x;
-      for (const unsigned int f : s.node_faces[node])
-        for (const unsigned int k : s.faces[f])
-          x[k] = s.reference[k];
-      const auto   n    = nodal_normal(s, node, x);
-      unsigned int axis = 0;
-      for (unsigned int d = 1; d < 3; ++d)
-        if (std::abs(n[d]) < std::abs(n[axis]))
-          axis = d;
-      return axis;
     }
 
     // Coulomb friction on a face, with first derivatives: the forces of the

@@ -1,9 +1,11 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/tensor.h>
 
 #include <contact_dynamics/contact/contact_ad.h>
 #include <contact_dynamics/contact/node_to_segment_contact.h>
 #include <contact_dynamics/parameters.h>
 
+#include <cmath>
 #include <set>
 
 namespace ContactDynamics
@@ -43,31 +45,35 @@ namespace ContactDynamics
     const NodeToSegmentParameters &parameters)
     : SurfaceContact<dim>(contact, parameters.complementarity)
     , smoothing_distance(parameters.smoothing_distance)
-  {
-    // (create_contact_formulation() allows it in 2-D only)
-    Assert(dim == 2, ExcNotImplemented());
-  }
+  {}
 
-  namespace
+  template <int dim>
+  std::set<unsigned int>
+  NodeToSegmentContact<dim>::primary_nodes(
+    const PairData                  &pair,
+    const std::vector<unsigned int> &faces) const
   {
-    // nodes of the primary faces and of their neighbours (which define the
-    // smoothed normals near the face ends)
-    template <int dim, typename PairData>
-    std::set<unsigned int>
-    primary_nodes(const PairData &pair, const std::vector<unsigned int> &faces)
-    {
-      std::set<unsigned int> nodes;
-      for (const unsigned int f : faces)
-        for (const unsigned int node : pair.primary.faces[f])
-          {
-            nodes.insert(node);
-            const unsigned int other = pair.primary.neighbour(node, f);
-            if (other != ContactSurface<dim>::invalid)
-              nodes.insert(other);
-          }
-      return nodes;
-    }
-  } // namespace
+    // the nodes of the primary faces and, for the smoothed normals near
+    // the face ends, of their neighbours: in 2-D the adjacent faces' other
+    // nodes, in 3-D the faces around every node (its nodal normal)
+    const auto            &p = pair.primary;
+    std::set<unsigned int> nodes;
+    for (const unsigned int f : faces)
+      for (const unsigned int node : p.faces[f])
+        {
+          nodes.insert(node);
+          if constexpr (dim == 2)
+            {
+              const unsigned int other = p.neighbour(node, f);
+              if (other != ContactSurface<dim>::invalid)
+                nodes.insert(other);
+            }
+          else if (smoothing_distance > 0)
+            for (const unsigned int g : p.node_faces[node])
+              nodes.insert(p.faces[g].begin(), p.faces[g].end());
+        }
+    return nodes;
+  }
 
   template <int dim>
   double
@@ -75,13 +81,25 @@ namespace ContactDynamics
                                                      const unsigned int node,
                                                      const VectorType  &u) const
   {
-    double current = 0;
-    for (const unsigned int face : pair.secondary.node_faces[node])
-      {
-        double length;
-        pair.secondary.face_box(face, u, length);
-        current += length / 2;
-      }
+    const auto &surface = pair.secondary;
+    double      current = 0;
+    for (const unsigned int face : surface.node_faces[node])
+      if constexpr (dim == 2)
+        {
+          double length;
+          surface.face_box(face, u, length);
+          current += length / 2;
+        }
+      else
+        {
+          // a quarter of the face's area (exact for a planar face: half
+          // the cross product of its diagonals)
+          const auto  &f = surface.faces[face];
+          const auto   x = [&](const unsigned int a) {
+            return surface.position(f[a], u);
+          };
+          current += cross_product_3d(x(3) - x(0), x(2) - x(1)).norm() / 8;
+        }
     return current > 0 ? pair.secondary.reference_weight[node] / current : 1.;
   }
 
@@ -93,7 +111,9 @@ namespace ContactDynamics
                                        double            &size) const
   {
     const Point<dim> x = pair.secondary.position(node, u);
-    size               = pair.secondary.reference_weight[node] * 2;
+    // (a length: the weight is an area in 3-D)
+    const double weight = pair.secondary.reference_weight[node];
+    size                = 2 * (dim == 2 ? weight : std::sqrt(weight));
     return BoundingBox<dim>(std::make_pair(x, x));
   }
 
@@ -107,11 +127,12 @@ namespace ContactDynamics
     std::vector<types::global_dof_index> unknowns;
     for (unsigned int d = 0; d < dim; ++d)
       unknowns.push_back(pair.secondary.dofs[node][d]);
-    for (const unsigned int n : primary_nodes<dim>(pair, primary_faces))
+    for (const unsigned int n : primary_nodes(pair, primary_faces))
       for (unsigned int d = 0; d < dim; ++d)
         unknowns.push_back(pair.primary.dofs[n][d]);
-    unknowns.push_back(pair.secondary.dofs[node][dim]);
-    unknowns.push_back(pair.secondary.dofs[node][dim + 1]);
+    // the normal and the dim - 1 tangential multipliers
+    for (unsigned int c = 0; c < dim; ++c)
+      unknowns.push_back(pair.secondary.dofs[node][dim + c]);
     return unknowns;
   }
 
@@ -264,7 +285,7 @@ namespace ContactDynamics
     Vec<AD>                           x, v;
     std::map<unsigned int, Vec<AD>>   xp, vp;
     variables.add(s, j, x, v);
-    for (const unsigned int node : primary_nodes<dim>(pair, faces))
+    for (const unsigned int node : primary_nodes(pair, faces))
       variables.add(p, node, xp[node], vp[node]);
     const AD lambda   = variables.multiplier();
     const AD lambda_t = variables.multiplier();

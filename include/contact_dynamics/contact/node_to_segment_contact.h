@@ -1,5 +1,5 @@
-// Node-to-segment contact (2-D): every secondary node is projected onto the
-// closest primary face; the pointwise gap along the (optionally smoothed)
+// Node-to-segment contact (2-D, and 3-D in node_to_segment_contact_3d.cc):
+// every secondary node is projected onto the closest primary face; the pointwise gap along the (optionally smoothed)
 // primary normal is enforced kinematically with a nodal Lagrange multiplier
 // and the same complementarity function as the mortar formulation; see
 // doc/contact.md.
@@ -9,6 +9,7 @@
 #include <contact_dynamics/contact/surface_contact.h>
 
 #include <map>
+#include <set>
 
 namespace ContactDynamics
 {
@@ -85,6 +86,14 @@ namespace ContactDynamics
                    PatchForces       &forces) override;
 
   private:
+    /**
+     * The primary nodes a node's patch reads with the candidate faces:
+     * their nodes and those that define their smoothed normals.
+     */
+    std::set<unsigned int>
+    primary_nodes(const PairData                  &pair,
+                  const std::vector<unsigned int> &faces) const;
+
     /** assemble_patch() with the AD number type AD for `unknowns`. */
     template <typename AD>
     void
@@ -102,6 +111,13 @@ namespace ContactDynamics
     std::map<std::ptrdiff_t, std::vector<unsigned int>> committed_face,
       trial_face;
   };
+  // 3-D (node_to_segment_contact_3d.cc): closest points on bilinear faces
+  template <>
+  void
+  NodeToSegmentContact<3>::assemble_patch(PairData          &pair,
+                                          const unsigned int patch,
+                                          const TrialState  &state,
+                                          PatchForces       &forces);
 } // namespace ContactDynamics
 
 #endif

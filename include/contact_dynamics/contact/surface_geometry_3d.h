@@ -1,0 +1,120 @@
+// Normals and tangents of 3-D contact surfaces (bilinear quadrilateral
+// faces), templated on the number type, shared by the 3-D mortar and
+// node-to-segment formulations.
+#ifndef contact_dynamics_contact_surface_geometry_3d_h
+#define contact_dynamics_contact_surface_geometry_3d_h
+
+#include <deal.II/base/exceptions.h>
+
+#include <contact_dynamics/contact/clipping_geometry.h>
+#include <contact_dynamics/contact/contact_surface.h>
+
+#include <algorithm>
+#include <map>
+#include <vector>
+
+namespace ContactDynamics
+{
+  namespace ClippingGeometry
+  {
+    using Surface = ContactSurface<3>;
+
+    /** Node positions (or velocities) by surface node. */
+    template <typename Number>
+    using NodeMap = std::map<unsigned int, Vec3<Number>>;
+
+    template <typename Number>
+    Vec3<double>
+    values(const Vec3<Number> &x)
+    {
+      Vec3<double> v;
+      for (unsigned int d = 0; d < 3; ++d)
+        v[d] = value_of(x[d]);
+      return v;
+    }
+
+    template <typename Number>
+    std::array<Vec3<double>, 4>
+    values(const std::array<Vec3<Number>, 4> &x)
+    {
+      std::array<Vec3<double>, 4> v;
+      for (unsigned int a = 0; a < 4; ++a)
+        v[a] = values(x[a]);
+      return v;
+    }
+
+    /** The four nodes of a face, from a node map. */
+    template <typename Number>
+    std::array<Vec3<Number>, 4>
+    face_nodes(const Surface         &surface,
+               const unsigned int     face,
+               const NodeMap<Number> &x)
+    {
+      std::array<Vec3<Number>, 4> result;
+      for (unsigned int a = 0; a < 4; ++a)
+        result[a] = x.at(surface.faces[face][a]);
+      return result;
+    }
+
+    /** The average of the unit corner normals of the faces at a node. */
+    template <typename Number>
+    Vec3<Number>
+    nodal_normal(const Surface         &s,
+                 const unsigned int     node,
+                 const NodeMap<Number> &xs)
+    {
+      std::vector<Vec3<Number>> corners;
+      for (const unsigned int f : s.node_faces[node])
+        {
+          const auto &nodes = s.faces[f];
+          const auto  a =
+            std::find(nodes.begin(), nodes.end(), node) - nodes.begin();
+          corners.push_back(corner_normal(face_nodes(s, f, xs), a));
+        }
+      return averaged_normal(corners);
+    }
+
+    // The tangents t_1 = (a - (a.n) n) / |a - (a.n) n| and t_2 = n x t_1 of
+    // a unit normal n, a the coordinate axis `axis`
+    template <typename Number>
+    std::array<Vec3<Number>, 2>
+    tangent_basis(const Vec3<Number> &n, const unsigned int axis)
+    {
+      Vec3<Number> t;
+      t[axis] = 1.;
+      t -= Number(t * n) * n;
+      // (|t| starts at 0.82 or more: below 0.3 the normal has turned to
+      // within 17 degrees of the axis and the basis is ill-conditioned)
+      AssertThrow(value_of(norm(t)) > 0.3,
+                  dealii::ExcMessage("3-D friction: a secondary node's normal has "
+                             "turned by more than about 37 degrees from its "
+                             "reference direction, towards the axis its "
+                             "tangents are built from (doc/contact.md, '3-D "
+                             "friction'); tangent bases that follow large "
+                             "rotations are not implemented yet."));
+      t /= norm(t);
+      return {{t, cross(n, t)}};
+    }
+
+    // The axis least aligned with a node's nodal normal in the reference
+    // configuration: its tangents (tangent_basis()) are smooth in the normal
+    // while it turns by less than 37 degrees (it starts 54.7 or more away
+    // from the axis)
+    inline unsigned int
+    tangent_axis(const Surface &s, const unsigned int node)
+    {
+      NodeMap<double> x;
+      for (const unsigned int f : s.node_faces[node])
+        for (const unsigned int k : s.faces[f])
+          x[k] = s.reference[k];
+      const auto   n    = nodal_normal(s, node, x);
+      unsigned int axis = 0;
+      for (unsigned int d = 1; d < 3; ++d)
+        if (std::abs(n[d]) < std::abs(n[axis]))
+          axis = d;
+      return axis;
+    }
+  } // namespace ClippingGeometry
+} // namespace ContactDynamics
+
+#endif
