@@ -10,7 +10,11 @@
 // parameters of a face are not polynomial in the auxiliary plane where its
 // quadrilateral is not a parallelogram, so the default 6-point rule leaves
 // about 2e-8 and the 15-point rule (Segment quadrature points = 4) 1e-10.
-// The contact force balances the reactions. (The approximate Jacobian
+// The contact force balances the reactions. One-pass node-to-segment does
+// not pass the test (as in 2-D, contact_patch_test): its nodal forces load
+// the primary surface unevenly, and the pressures are off by about a
+// quarter (recorded, so that a change is noticed); the gaps of its nodes
+// are closed exactly. (The approximate Jacobian
 // keeps the test fast; the exact one is checked in contact_jacobian_3d.)
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
@@ -21,7 +25,7 @@ using namespace dealii;
 
 // the largest relative pressure error with the given triangle rule
 double
-run(const unsigned int n_points_1d)
+run(const unsigned int n_points_1d, const bool nts = false)
 {
   ParameterHandler prm;
   read_test_parameters("patch_3d.prm",
@@ -50,13 +54,16 @@ subsection Nonlinear solver
   set Absolute tolerance = 1e-11
 end
 subsection Contact
-  set Formulation = mortar
+  set Formulation = )" + std::string(nts ? "nts" : "mortar") + R"(
   set Pairs = upper_bottom: lower_top
   subsection Mortar
     set c_n = 1e6
     set Jacobian = approximate
     set Segment quadrature points = )" +
                                    std::to_string(n_points_1d) + R"(
+  end
+  subsection Node to segment
+    set c_n = 1e6
   end
 end
 subsection Output
@@ -85,7 +92,8 @@ end
         }
     }
   const auto stats = contact_statistics(*contact);
-  deallog.push("rule " + std::to_string(n_points_1d));
+  deallog.push(nts ? std::string("nts") :
+                     "rule " + std::to_string(n_points_1d));
   const auto top    = simulator.reaction_force("upper_top");
   const auto bottom = simulator.reaction_force("lower_bottom");
   deallog << "secondary nodes " << contact->node_states(0).size() << ", active "
@@ -98,16 +106,21 @@ end
               (top[1] + bottom[1]) / exact,
               0.,
               1e-9);
+  // (NTS: the primary surface bends under its uneven nodal loads, and its
+  // normals tilt: measured 1.2e-5 sideways, 0.19 % less load)
   check_close("tangential contact force x",
               stats.at("contact_force_x") / exact,
               0.,
-              1e-9);
+              nts ? 1e-4 : 1e-9);
   check_close("tangential contact force z",
               stats.at("contact_force_z") / exact,
               0.,
-              1e-9);
+              nts ? 1e-4 : 1e-9);
   check_close("gap at active nodes / delta", worst_gap / 1e-3, 0., 1e-9);
-  check_close("total load / (E delta area)", -top[1] / exact, 1., 1e-9);
+  check_close("total load / (E delta area)",
+              -top[1] / exact,
+              1.,
+              nts ? 0.01 : 1e-9);
   deallog.pop();
   return worst / exact;
 }
@@ -127,4 +140,10 @@ main()
   deallog << std::setprecision(2)
           << "measured relative pressure errors: 6-point rule " << error_6
           << ", 15-point rule " << error_15 << std::endl;
+  const double error_nts = run(2, true);
+  deallog << std::setprecision(3)
+          << "nts: measured relative pressure error: " << error_nts
+          << std::endl;
+  check_true("nts: the error is that of one-pass NTS (between 1 % and 50 %)",
+             error_nts > 0.01 && error_nts < 0.5);
 }
