@@ -26,6 +26,11 @@
 //    an isotropic friction law); the energy balance closes to 1 % of the
 //    dissipation (0.48 % measured: jumps at the steps where nodes come back
 //    into contact while sliding; 0.33 % at half the step).
+// The same for node-to-segment (nodal forces along the tangents of the
+// primary normal at the closest point): the same bounds, except that the
+// pull's energy balance closes only to 1 % of the dissipation (measured
+// -0.47 %: the work of the normal forces as the nodes slide over the
+// primary surface that their uneven loads bend; mortar 3e-7).
 // The measured values are in the file "measured" beside "output".
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
@@ -69,9 +74,34 @@ namespace
     return momentum / mass;
   }
 
-  void
-  pull()
+  // the Contact subsection for "mortar" or "nts" with c_n and c_t
+  std::string
+  contact_section(const std::string &formulation,
+                  const std::string &c_n,
+                  const std::string &c_t)
   {
+    return R"(
+subsection Contact
+  set Formulation = )" +
+           formulation + R"(
+  set Pairs = upper_bottom: lower_top
+  set Friction coefficients = 0.3
+  subsection )" +
+           (formulation == "nts" ? "Node to segment" : "Mortar") + R"(
+    set c_n = )" +
+           c_n + R"(
+    set c_t = )" +
+           c_t + R"(
+    set Jacobian = approximate
+  end
+end
+)";
+  }
+
+  void
+  pull(const std::string &formulation)
+  {
+    deallog.push(formulation);
     ParameterHandler prm;
     read_test_parameters("friction_3d.prm",
                          R"(
@@ -99,21 +129,11 @@ end
 subsection Nonlinear solver
   set Absolute tolerance = 1e-9
 end
-subsection Contact
-  set Formulation = mortar
-  set Pairs = upper_bottom: lower_top
-  set Friction coefficients = 0.3
-  subsection Mortar
-    set c_n = 1e6
-    set c_t = 1e4
-    set Jacobian = approximate
-  end
-end
 subsection Output
   set Output directory = output_friction_3d
   set VTU interval = 0
 end
-)",
+)" + contact_section(formulation, "1e6", "1e4"),
                          prm);
     std::ostringstream            screen;
     ContactDynamics::Simulator<3> simulator(prm, screen);
@@ -159,7 +179,10 @@ end
           }
         previous_Ry = Ry;
       }
-    record_measured("pull: first slip node at T / (mu N)", onset, 0., 1.);
+    record_measured(formulation + ": pull: first slip node at T / (mu N)",
+                    onset,
+                    0.,
+                    1.);
     check_true("pull: a stick phase below mu N / 2", stuck_phase);
     check_true("pull: every node slips in gross sliding", all_slip);
     check_range("pull: support |R_t| / (mu R_y) - 1 in gross sliding",
@@ -177,15 +200,19 @@ end
                 dissipation_error,
                 -0.02,
                 0.02);
-    check_close("pull: energy balance error / dissipation",
+    // (node-to-segment: the normal forces work as the nodes slide over the
+    // primary surface, which its uneven nodal loads bend; measured -4.7e-3)
+    check_range("pull: energy balance error / dissipation",
                 e.error() / e.frictional,
-                0.,
-                1e-3);
+                formulation == "nts" ? -1e-2 : -1e-3,
+                formulation == "nts" ? 1e-2 : 1e-3);
+    deallog.pop();
   }
 
   void
-  braking()
+  braking(const std::string &formulation)
   {
+    deallog.push(formulation);
     ParameterHandler prm;
     read_test_parameters("braking_3d.prm",
                          R"(
@@ -213,21 +240,11 @@ subsection Time integration
   set Time step = 0.005
   set End time = 0.1
 end
-subsection Contact
-  set Formulation = mortar
-  set Pairs = upper_bottom: lower_top
-  set Friction coefficients = 0.3
-  subsection Mortar
-    set c_n = 1e4
-    set c_t = 100
-    set Jacobian = approximate
-  end
-end
 subsection Output
   set Output directory = output_braking_3d
   set VTU interval = 0
 end
-)",
+)" + contact_section(formulation, "1e4", "100"),
                          prm);
     std::ostringstream            screen;
     ContactDynamics::Simulator<3> simulator(prm, screen);
@@ -261,6 +278,7 @@ end
                 degrees_from_direction(deceleration, 1.),
                 0.,
                 1.);
+    deallog.pop();
   }
 } // namespace
 
@@ -268,6 +286,9 @@ int
 main()
 {
   initlog();
-  pull();
-  braking();
+  for (const std::string formulation : {"mortar", "nts"})
+    {
+      pull(formulation);
+      braking(formulation);
+    }
 }
