@@ -4,7 +4,7 @@
 // processes and their sums sent to the owners of the nodes
 // (doc/contact.md, "Parallel assembly"), so this also covers a contact
 // surface that lies on one process's part of the mesh (the bouncing
-// block's bottom).
+// block's bottom); mortar and node-to-segment.
 #include "parallel_compare.h"
 
 
@@ -30,4 +30,14 @@ main()
              {{"Scene/Refinement factor", "0.5"},
               {"Scene/Bouncing block/Depth elements", "2"},
               {"Time integration/End time", "1"}});
+  // node-to-segment with smoothed normals and friction, sliding
+  compare<3>("patch_test_3d_nts_friction",
+             "prm/examples/patch_test_3d.prm",
+             {{"Contact/Formulation", "nts"},
+              {"Contact/Node to segment/Normal smoothing distance", "0.3"},
+              {"Contact/Friction coefficients", "0.3"},
+              {"Boundary conditions/Dirichlet",
+               "lower_bottom: xyz: 0; upper_top: y: -1e-3*min(10*t, 1); "
+               "upper_top: x: 0.04*t; upper_top: z: 0.02*t"},
+              {"Time integration/Time step", "0.1"}});
 }
