@@ -531,6 +531,55 @@ namespace ContactDynamics
 
 
 
+  namespace
+  {
+    // the vertices and cells of a mesh of one box [p0, p1]
+    template <int dim>
+    BodyMesh<dim>
+    box_mesh(const Triangulation<dim> &box,
+             const Point<dim>         &p0,
+             const Point<dim>         &p1,
+             const std::string        &surface_prefix)
+    {
+      BodyMesh<dim> body;
+      body.vertices = box.get_vertices();
+      for (const auto &cell : box.active_cell_iterators())
+        {
+          CellData<dim> data;
+          for (const unsigned int v : cell->vertex_indices())
+            data.vertices[v] = cell->vertex_index(v);
+          body.cells.push_back(data);
+        }
+      body.surface_of = box_surfaces<dim>(p0, p1, surface_prefix);
+      return body;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  BodyDefinition<dim>
+  box_body(const std::string                      &name,
+           const Point<dim>                       &p0,
+           const std::vector<std::vector<double>> &steps,
+           const std::string                      &surface_prefix)
+  {
+    AssertThrow(steps.size() == dim, ExcInternalError());
+    Point<dim> p1 = p0;
+    for (unsigned int d = 0; d < dim; ++d)
+      for (const double h : steps[d])
+        p1[d] += h;
+    return {name,
+            box_surface_names(surface_prefix, dim),
+            [p0, p1, steps, surface_prefix]() {
+              Triangulation<dim> box;
+              GridGenerator::subdivided_hyper_rectangle(box, steps, p0, p1);
+              return box_mesh(box, p0, p1, surface_prefix);
+            }};
+  }
+
+
+
   template <int dim>
   BodyDefinition<dim>
   box_body(const std::string               &name,
@@ -544,17 +593,7 @@ namespace ContactDynamics
             [p0, p1, n, surface_prefix]() {
               Triangulation<dim> box;
               GridGenerator::subdivided_hyper_rectangle(box, n, p0, p1);
-              BodyMesh<dim> body;
-              body.vertices = box.get_vertices();
-              for (const auto &cell : box.active_cell_iterators())
-                {
-                  CellData<dim> data;
-                  for (const unsigned int v : cell->vertex_indices())
-                    data.vertices[v] = cell->vertex_index(v);
-                  body.cells.push_back(data);
-                }
-              body.surface_of = box_surfaces<dim>(p0, p1, surface_prefix);
-              return body;
+              return box_mesh(box, p0, p1, surface_prefix);
             }};
   }
 
@@ -565,6 +604,11 @@ namespace ContactDynamics
            const Point<2> &,
            const Point<2> &,
            const std::vector<unsigned int> &,
+           const std::string &);
+  template BodyDefinition<3>
+  box_body(const std::string &,
+           const Point<3> &,
+           const std::vector<std::vector<double>> &,
            const std::string &);
   template BodyDefinition<3>
   box_body(const std::string &,

@@ -1,4 +1,5 @@
-// Hertz: a half-cylinder pressed onto a block graded towards the contact.
+// Hertz: a half-cylinder (2-D) or a sphere (3-D, a quarter by symmetry)
+// pressed onto a block graded towards the contact.
 #include <contact_dynamics/scenes/body_mesh.h>
 #include <contact_dynamics/scenes/scene_registry.h>
 
@@ -9,7 +10,8 @@ namespace ContactDynamics
 {
   namespace
   {
-    class Hertz : public BuiltInScene<2>
+    template <int dim>
+    class Hertz : public BuiltInScene<dim>
     {
     public:
       static void
@@ -21,12 +23,17 @@ namespace ContactDynamics
           "1",
           Patterns::Double(1e-12),
           "Radius of the half-cylinder (flat face on top, arc at the "
-          "bottom) pressed onto the block.");
+          "bottom) pressed onto the block; in 3-D of the sphere whose cap "
+          "(a quarter: x, z >= 0, up to 0.4 R from the axis, 0.5 R high "
+          "above its lowest point) is pressed onto the block.");
         prm.declare_entry(
           "Block width",
           "8",
           Patterns::Double(1e-12),
-          "Width of the block [-width/2, width/2] x [0, height].");
+          "Width of the block [-width/2, width/2] x [0, height]; in 3-D "
+          "the quarter [0, width/2] x [0, height] x [0, width/2], with the "
+          "symmetry planes x = 0 and z = 0 (the surfaces *_left and "
+          "*_front).");
         prm.declare_entry("Block height",
                           "4",
                           Patterns::Double(1e-12),
@@ -52,43 +59,111 @@ namespace ContactDynamics
         prm.leave_subsection();
       }
 
-      std::vector<BodyDefinition<2>>
+      std::vector<BodyDefinition<dim>>
       bodies() const override
       {
         using namespace MeshSteps;
-        const double              R = radius, w = block_width, h = block_height;
-        const std::vector<double> half_x = graded(R, w / 2);
-        return {half_disc_body("cylinder",
-                               Point<2>(0, h + gap + R),
-                               R,
-                               scaled(32),
-                               scaled(20),
-                               0,
-                               0),
-                rectangle_body("block",
-                               Point<2>(-w / 2, 0),
-                               Point<2>(w / 2, h),
-                               concatenate(reversed(half_x), half_x),
-                               reversed(graded(R, h)))};
+        const double R = radius, w = block_width, h = block_height;
+        if constexpr (dim == 2)
+          {
+            const std::vector<double> half_x = graded(R, w / 2, 1.1);
+            return {half_disc_body("cylinder",
+                                   Point<2>(0, h + gap + R),
+                                   R,
+                                   this->scaled(32),
+                                   this->scaled(20),
+                                   0,
+                                   0),
+                    rectangle_body("block",
+                                   Point<2>(-w / 2, 0),
+                                   Point<2>(w / 2, h),
+                                   concatenate(reversed(half_x), half_x),
+                                   reversed(graded(R, h, 1.1)))};
+          }
+        else
+          {
+            // fine cells within 0.2 R of the axis (a/R = 0.1 to 0.15),
+            // growing faster than in 2-D: the cell count grows with the cube
+            const double              fine = 0.2 * R, ratio = 1.4;
+            const std::vector<double> block_x = graded(fine, w / 2, ratio);
+            const double cap_width = 0.4 * R, cap_height = 0.5 * R,
+                         y0        = h + gap;
+            const std::vector<double> cap_x = graded(fine, cap_width, ratio);
+            return {sphere_cap(box_body<3>("sphere",
+                                           Point<3>(0, y0, 0),
+                                           {cap_x,
+                                            graded(fine, cap_height, ratio),
+                                            cap_x},
+                                           "sphere_"),
+                               y0,
+                               cap_width,
+                               cap_height),
+                    box_body<3>("block",
+                                Point<3>(0, 0, 0),
+                                {block_x, reversed(graded(fine, h, ratio)), block_x},
+                                "block_")};
+          }
+      }
+
+      // A box [0, width] x [y0, y0 + height] x [0, width] with its bottom
+      // moved onto the sphere of radius R with the lowest point (0, y0, 0),
+      // the layers above it in proportion; the curved bottom is
+      // sphere_bottom.
+      BodyDefinition<dim>
+      sphere_cap(BodyDefinition<dim> body,
+                 const double        y0,
+                 const double        width,
+                 const double        height) const
+      {
+        const auto   mesh = body.mesh;
+        const double R    = radius;
+        body.mesh         = [mesh, R, y0, width, height]() {
+          BodyMesh<dim> m = mesh();
+          for (auto &v : m.vertices)
+            {
+              const double bottom =
+                y0 + R - std::sqrt(R * R - v[0] * v[0] - v[2] * v[2]);
+              const double s = (v[1] - y0) / height;
+              v[1]           = bottom + s * (y0 + height - bottom);
+            }
+          const double tol = 1e-8 * R;
+          m.surface_of     = [=](const Point<dim> &c) -> std::string {
+            if (std::abs(c[0]) < tol)
+              return "sphere_left";
+            if (std::abs(c[0] - width) < tol)
+              return "sphere_right";
+            if (std::abs(c[2]) < tol)
+              return "sphere_front";
+            if (std::abs(c[2] - width) < tol)
+              return "sphere_back";
+            if (std::abs(c[1] - (y0 + height)) < tol)
+              return "sphere_top";
+            return "sphere_bottom";
+          };
+          return m;
+        };
+        return body;
       }
 
     private:
       // Steps from the contact point outwards over `total`: uniform cells of
       // size R/40 within `fine_length`, geometrically growing (ratio about
-      // 1.1) outside.
+      // `ratio`) outside.
       std::vector<double>
-      graded(const double fine_length, const double total) const
+      graded(const double fine_length,
+             const double total,
+             const double ratio) const
       {
         using namespace MeshSteps;
         const double R    = radius;
-        const double size = R / scaled(40);
+        const double size = R / this->scaled(40);
         const double fine = std::min(fine_length, total);
         if (total - fine <= 2 * R / 40)
-          return uniform(total, scaled(total / (R / 40)));
+          return uniform(total, this->scaled(total / (R / 40)));
         const unsigned int n_fine =
           std::max(1u, (unsigned int)std::round(fine / size));
         const unsigned int n_grow =
-          scaled(n_growing(total - fine, R / 40, 1.1));
+          this->scaled(n_growing(total - fine, R / 40, ratio));
         return concatenate(uniform(fine, n_fine),
                            geometric(total - fine, fine / n_fine, n_grow));
       }
@@ -103,8 +178,9 @@ namespace ContactDynamics
   SceneEntry
   hertz_scene()
   {
-    return planar_scene<Hertz>(
+    return scene_in_any_dimension<Hertz>(
       "hertz",
-      "a half-cylinder pressed onto a block, see subsection Hertz");
+      "a half-cylinder (3-D: a quarter of a sphere) pressed onto a block, "
+      "see subsection Hertz");
   }
 } // namespace ContactDynamics

@@ -119,6 +119,14 @@ namespace ContactDynamics
            const std::vector<unsigned int> &n,
            const std::string               &surface_prefix);
 
+  /** The same on the tensor grid of the step sizes steps[d] along axis d. */
+  template <int dim>
+  BodyDefinition<dim>
+  box_body(const std::string                      &name,
+           const Point<dim>                       &p0,
+           const std::vector<std::vector<double>> &steps,
+           const std::string                      &surface_prefix);
+
   /**
    * A rectangle [p0, p1] on the tensor grid of the given step sizes; its
    * surfaces are name_left, name_right, name_bottom, name_top.
