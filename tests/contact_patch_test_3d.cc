@@ -12,7 +12,7 @@
 // about 2e-8 and the 15-point rule (Segment quadrature points = 4) 1e-10.
 // The contact force balances the reactions. One-pass node-to-segment does
 // not pass the test (as in 2-D, contact_patch_test): its nodal forces load
-// the primary surface unevenly, and the pressures are off by about a
+// the primary surface unevenly, and the pressures are off by up to a
 // quarter (recorded, so that a change is noticed); the gaps of its nodes
 // are closed exactly. (The approximate Jacobian
 // keeps the test fast; the exact one is checked in contact_jacobian_3d.)

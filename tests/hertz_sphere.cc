@@ -111,20 +111,27 @@ end
     const double p0     = 3 * P / (2 * M_PI * a * a);
 
     // the area a node's pressure acts on: integral of N_j over the covered
-    // part of the surface (mortar), or a quarter of its current faces
-    // (nts, whose pressure output is the nodal force over that area)
+    // part of the surface (mortar), or for nts (whose pressure output is
+    // the nodal force lambda_j integral(N_j) over the current area) the
+    // reference integral(N_j) times the change of the quarters of the
+    // node's faces
     const auto weight = [&](const unsigned int j) {
       if (formulation != "nts")
         return nodes[j].weight;
-      double area = 0;
+      double current = 0, reference = 0;
       for (const unsigned int f : surface.node_faces[j])
         {
-          const auto x = [&](const unsigned int k) {
-            return surface.position(surface.faces[f][k], u);
+          const auto &face = surface.faces[f];
+          const auto  x    = [&](const unsigned int k) {
+            return surface.position(face[k], u);
           };
-          area += cross_product_3d(x(3) - x(0), x(2) - x(1)).norm() / 8;
+          const auto X = [&](const unsigned int k) {
+            return surface.reference[face[k]];
+          };
+          current += cross_product_3d(x(3) - x(0), x(2) - x(1)).norm();
+          reference += cross_product_3d(X(3) - X(0), X(2) - X(1)).norm();
         }
-      return area;
+      return surface.reference_weight[j] * current / reference;
     };
     const auto radius2 = [&](const unsigned int j) {
       const Point<3> x = surface.position(j, u);

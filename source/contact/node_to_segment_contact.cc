@@ -82,25 +82,37 @@ namespace ContactDynamics
                                                      const VectorType  &u) const
   {
     const auto &surface = pair.secondary;
-    double      current = 0;
-    for (const unsigned int face : surface.node_faces[node])
-      if constexpr (dim == 2)
-        {
-          double length;
-          surface.face_box(face, u, length);
-          current += length / 2;
-        }
-      else
-        {
-          // a quarter of the face's area (exact for a planar face: half
-          // the cross product of its diagonals)
-          const auto  &f = surface.faces[face];
-          const auto   x = [&](const unsigned int a) {
-            return surface.position(f[a], u);
-          };
-          current += cross_product_3d(x(3) - x(0), x(2) - x(1)).norm() / 8;
-        }
-    return current > 0 ? pair.secondary.reference_weight[node] / current : 1.;
+    if constexpr (dim == 2)
+      {
+        double current = 0;
+        for (const unsigned int face : surface.node_faces[node])
+          {
+            double length;
+            surface.face_box(face, u, length);
+            current += length / 2;
+          }
+        return current > 0 ? surface.reference_weight[node] / current : 1.;
+      }
+    else
+      {
+        // the change of the area around the node: a quarter of each face's
+        // area (half the cross product of its diagonals), now and in the
+        // reference configuration (reference_weight is integral N_j, which
+        // differs from that on faces that are not parallelograms)
+        double current = 0, reference = 0;
+        for (const unsigned int face : surface.node_faces[node])
+          {
+            const auto &f       = surface.faces[face];
+            const auto  quarter = [&](const auto &x) {
+              return cross_product_3d(x(3) - x(0), x(2) - x(1)).norm() / 8;
+            };
+            current += quarter(
+              [&](const unsigned int a) { return surface.position(f[a], u); });
+            reference += quarter(
+              [&](const unsigned int a) { return surface.reference[f[a]]; });
+          }
+        return current > 0 ? reference / current : 1.;
+      }
   }
 
   template <int dim>
@@ -239,7 +251,11 @@ namespace ContactDynamics
           const Vec<AD> n_other =
             end == 0 ? SegmentGeometry::face_normal(xp.at(other), y0) :
                        SegmentGeometry::face_normal(y1, xp.at(other));
-          const AD weight = (smoothing_distance - to_end) / smoothing_distance;
+          // (1 beyond the end, where the face memory extends the face)
+          const AD weight =
+            to_end.val() <= 0 ?
+              AD(1.) :
+              AD((smoothing_distance - to_end) / smoothing_distance);
           normal += AD(weight / 2.) * (n_other - face_normal);
         }
       normal /= SegmentGeometry::norm(normal);

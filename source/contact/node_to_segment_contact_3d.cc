@@ -41,22 +41,64 @@ namespace ContactDynamics
       return n / norm(n);
     }
 
+    // The closest point to x on edge e of face y (0: xi = 0, 1: xi = 1,
+    // 2: eta = 0, 3: eta = 1; the edges of a bilinear face are straight)
+    // as the parameter along the edge, not clamped
+    template <typename Number>
+    Number
+    edge_parameter(const std::array<Vec3<Number>, 4> &y,
+                   const Vec3<Number>                &x,
+                   const unsigned int                 e)
+    {
+      static constexpr unsigned int ends[4][2] = {{0, 2},
+                                                  {1, 3},
+                                                  {0, 1},
+                                                  {2, 3}};
+      const Vec3<Number> a = y[ends[e][0]], d = y[ends[e][1]] - a;
+      return ((x - a) * d) / (d * d);
+    }
+
+    // the face parameters of the point at parameter t along edge e
+    template <typename Number>
+    std::array<Number, 2>
+    edge_point(const unsigned int e, const Number &t)
+    {
+      const Number end(e % 2 ? 1. : 0.);
+      return e < 2 ? std::array<Number, 2>{{end, t}} :
+                     std::array<Number, 2>{{t, end}};
+    }
+
+    // The edge a point with parameters outside the face was projected onto
+    // (edge_point()), or 4 at a corner or inside
+    unsigned int
+    projection_edge(const std::array<double, 2> &parameters)
+    {
+      const auto on_end = [](const double t) { return t == 0. || t == 1.; };
+      const auto inside = [](const double t) { return t > 0. && t < 1.; };
+      if (on_end(parameters[0]) && inside(parameters[1]))
+        return parameters[0] == 0. ? 0 : 1;
+      if (on_end(parameters[1]) && inside(parameters[0]))
+        return parameters[1] == 0. ? 2 : 3;
+      return 4;
+    }
+
     // The primary face closest to secondary node j at x and the parameters
-    // of the projection on it (within the tolerance beyond the face's edges
-    // the projection extends the face; farther out it is clamped to the
-    // face). `previous`: the face of the node's projection in the previous
+    // of the projection on it: the closest point of the face's bilinear
+    // surface, which within the tolerance beyond the face's edges extends
+    // the face; farther out the closest point on the face's boundary.
+    // `previous`: the face of the node's projection in the previous
     // iteration of this attempt, kept while the node stays within the
     // tolerance of it (at a concave kink two faces are equally close, and
     // switching between their normals at every iteration would stall
-    // Newton). Faces seen from behind are skipped.
+    // Newton). Faces seen from behind (or degenerate) are skipped.
     unsigned int
-    closest_face(const Surface                   &s,
-                 const Surface                   &p,
-                 const unsigned int               j,
-                 const std::vector<unsigned int> &candidates,
+    closest_face(const Surface                       &s,
+                 const Surface                       &p,
+                 const unsigned int                   j,
+                 const std::vector<unsigned int>     &candidates,
                  const TrilinosWrappers::MPI::Vector &u,
-                 const unsigned int               previous,
-                 std::array<double, 2>           &best_parameters)
+                 const unsigned int                   previous,
+                 std::array<double, 2>               &best_parameters)
     {
       // (the 2-D tolerance, 1e-2 of the half-face, as a fraction of the face)
       constexpr double tolerance = 5e-3;
@@ -78,41 +120,76 @@ namespace ContactDynamics
           std::array<Vec3<double>, 4> y;
           for (unsigned int a = 0; a < 4; ++a)
             y[a] = position(p, p.faces[f][a]);
-          double xi, eta;
-          if (!closest_point(y, x, xi, eta))
-            continue;
-          const bool within = std::min(xi, eta) >= -tolerance &&
-                              std::max(xi, eta) <= 1 + tolerance;
-          const double xi_c  = std::clamp(xi, 0., 1.),
-                       eta_c = std::clamp(eta, 0., 1.);
-          if (face_normal(y, xi_c, eta_c) * n_s >= 0)
+          std::array<double, 2> t;
+          const bool            within =
+            closest_point(y, x, t[0], t[1]) &&
+            std::min(t[0], t[1]) >= -tolerance &&
+            std::max(t[0], t[1]) <= 1 + tolerance;
+          if (!within)
+            {
+              double nearest = 1e300;
+              for (unsigned int e = 0; e < 4; ++e)
+                {
+                  const auto   q = edge_point(
+                    e, std::clamp(edge_parameter(y, x, e), 0., 1.));
+                  const double d = norm(x - interpolate(y, q[0], q[1]));
+                  if (d < nearest)
+                    {
+                      nearest = d;
+                      t       = q;
+                    }
+                }
+            }
+          const double xi_c = std::clamp(t[0], 0., 1.),
+                       eta_c = std::clamp(t[1], 0., 1.);
+          if (!(face_normal(y, xi_c, eta_c) * n_s < 0))
             continue;
           if (f == previous && within)
             {
-              best_parameters = {{xi, eta}};
+              best_parameters = t;
               return f;
             }
-          const double distance = norm(x - interpolate(y, xi_c, eta_c));
+          const double distance = norm(x - interpolate(y, t[0], t[1]));
           if (distance < best_distance)
             {
               best            = f;
               best_distance   = distance;
-              best_parameters = within ? std::array<double, 2>{{xi, eta}} :
-                                         std::array<double, 2>{{xi_c, eta_c}};
+              best_parameters = t;
             }
         }
       return best;
     }
 
-    // The weight of the smoothed normal at a face parameter s in [0, 1]:
-    // 1 at the face's ends, 0 farther than `distance` from them (linear)
+    // The weight of the smoothed normal at a face parameter s: 1 at and
+    // beyond the face's ends, 0 farther than `distance` from them (linear)
     template <typename Number>
     Number
     end_weight(const Number &s, const double distance)
     {
       const Number to_end = s.val() <= 0.5 ? s : Number(1. - s);
-      return to_end.val() >= distance ? Number(0.) :
-                                        Number((distance - to_end) / distance);
+      if (to_end.val() >= distance)
+        return Number(0.);
+      if (to_end.val() <= 0)
+        return Number(1.);
+      return Number((distance - to_end) / distance);
+    }
+
+    // The coordinate axis least aligned with a primary face's normal in the
+    // reference configuration, for the tangents of the contact normal
+    // there (the NTS normal is the primary one; as tangent_axis() for
+    // mortar's secondary normals)
+    unsigned int
+    face_tangent_axis(const Surface &p, const unsigned int face)
+    {
+      std::array<Vec3<double>, 4> y;
+      for (unsigned int a = 0; a < 4; ++a)
+        y[a] = to_vec(p.reference[p.faces[face][a]]);
+      const Vec3<double> n    = face_normal(y, 0.5, 0.5);
+      unsigned int       axis = 0;
+      for (unsigned int d = 1; d < 3; ++d)
+        if (std::abs(n[d]) < std::abs(n[axis]))
+          axis = d;
+      return axis;
     }
   } // namespace
 
@@ -160,19 +237,27 @@ namespace ContactDynamics
       AD         xi(parameters[0]), eta(parameters[1]);
       if (exact)
         {
-          // derivatives of the closest point in the parameters that are
-          // the closest point's (not clamped to the face's edge)
-          double xi_free, eta_free;
-          if (closest_point(values(y), values(x), xi_free, eta_free))
+          // the derivatives of the closest point, of the surface or of an
+          // edge (none at a corner)
+          const unsigned int edge = projection_edge(parameters);
+          double             xi_free, eta_free;
+          if (closest_point(values(y), values(x), xi_free, eta_free) &&
+              std::abs(xi_free - parameters[0]) +
+                  std::abs(eta_free - parameters[1]) <
+                1e-12)
             {
               const auto r = closest_point_with_derivatives(y,
                                                             x,
                                                             xi_free,
                                                             eta_free);
-              if (std::abs(xi_free - parameters[0]) < 1e-12)
-                xi = r[0];
-              if (std::abs(eta_free - parameters[1]) < 1e-12)
-                eta = r[1];
+              xi           = r[0];
+              eta          = r[1];
+            }
+          else if (edge < 4)
+            {
+              const auto q = edge_point(edge, edge_parameter(y, x, edge));
+              xi           = q[0];
+              eta          = q[1];
             }
         }
 
@@ -205,7 +290,7 @@ namespace ContactDynamics
       const bool     friction    = pair.friction_coefficient > 0;
       std::array<Vec3<AD>, 2> tangent;
       if (friction)
-        tangent = tangent_basis(n_secondary, tangent_axis(s, j));
+        tangent = tangent_basis(n_secondary, face_tangent_axis(p, face));
       if ((this->complementarity.holds_contact() && state.dynamic) || friction)
         {
           Vec3<AD> v_rel = v;

@@ -599,6 +599,47 @@ namespace ContactDynamics
 
 
 
+  BodyDefinition<3>
+  sphere_cap_body(const std::string                      &name,
+                  const Point<3>                         &p0,
+                  const std::vector<std::vector<double>> &steps,
+                  const Point<3>                         &lowest,
+                  const double                            radius)
+  {
+    BodyDefinition<3> body = box_body<3>(name, p0, steps, name + "_");
+    const auto        box  = body.mesh;
+    double            top  = p0[1];
+    for (const double h : steps[1])
+      top += h;
+    body.mesh = [box, name, p0, top, lowest, radius]() {
+      BodyMesh<3> m = box();
+      for (auto &v : m.vertices)
+        {
+          const double r2 = (v[0] - lowest[0]) * (v[0] - lowest[0]) +
+                            (v[2] - lowest[2]) * (v[2] - lowest[2]);
+          AssertThrow(r2 < radius * radius,
+                      ExcMessage("sphere_cap_body: the box is wider than the "
+                                 "sphere"));
+          const double bottom =
+            lowest[1] + radius - std::sqrt(radius * radius - r2);
+          AssertThrow(bottom < top,
+                      ExcMessage("sphere_cap_body: the box is lower than the "
+                                 "cap"));
+          v[1] = bottom + (v[1] - p0[1]) / (top - p0[1]) * (top - bottom);
+        }
+      // the sides and the top stay planes; the rest is the cap
+      const auto planes = m.surface_of;
+      m.surface_of      = [planes, name](const Point<3> &c) {
+        const std::string surface = planes(c);
+        return surface.empty() ? name + "_bottom" : surface;
+      };
+      return m;
+    };
+    return body;
+  }
+
+
+
   template BodyDefinition<2>
   box_body(const std::string &,
            const Point<2> &,

@@ -89,60 +89,18 @@ namespace ContactDynamics
             const double cap_width = 0.4 * R, cap_height = 0.5 * R,
                          y0        = h + gap;
             const std::vector<double> cap_x = graded(fine, cap_width, ratio);
-            return {sphere_cap(box_body<3>("sphere",
-                                           Point<3>(0, y0, 0),
-                                           {cap_x,
-                                            graded(fine, cap_height, ratio),
-                                            cap_x},
-                                           "sphere_"),
-                               y0,
-                               cap_width,
-                               cap_height),
+            return {sphere_cap_body("sphere",
+                                    Point<3>(0, y0, 0),
+                                    {cap_x,
+                                     graded(fine, cap_height, ratio),
+                                     cap_x},
+                                    Point<3>(0, y0, 0),
+                                    R),
                     box_body<3>("block",
                                 Point<3>(0, 0, 0),
                                 {block_x, reversed(graded(fine, h, ratio)), block_x},
                                 "block_")};
           }
-      }
-
-      // A box [0, width] x [y0, y0 + height] x [0, width] with its bottom
-      // moved onto the sphere of radius R with the lowest point (0, y0, 0),
-      // the layers above it in proportion; the curved bottom is
-      // sphere_bottom.
-      BodyDefinition<dim>
-      sphere_cap(BodyDefinition<dim> body,
-                 const double        y0,
-                 const double        width,
-                 const double        height) const
-      {
-        const auto   mesh = body.mesh;
-        const double R    = radius;
-        body.mesh         = [mesh, R, y0, width, height]() {
-          BodyMesh<dim> m = mesh();
-          for (auto &v : m.vertices)
-            {
-              const double bottom =
-                y0 + R - std::sqrt(R * R - v[0] * v[0] - v[2] * v[2]);
-              const double s = (v[1] - y0) / height;
-              v[1]           = bottom + s * (y0 + height - bottom);
-            }
-          const double tol = 1e-8 * R;
-          m.surface_of     = [=](const Point<dim> &c) -> std::string {
-            if (std::abs(c[0]) < tol)
-              return "sphere_left";
-            if (std::abs(c[0] - width) < tol)
-              return "sphere_right";
-            if (std::abs(c[2]) < tol)
-              return "sphere_front";
-            if (std::abs(c[2] - width) < tol)
-              return "sphere_back";
-            if (std::abs(c[1] - (y0 + height)) < tol)
-              return "sphere_top";
-            return "sphere_bottom";
-          };
-          return m;
-        };
-        return body;
       }
 
     private:

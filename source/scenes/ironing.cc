@@ -1,18 +1,39 @@
-// The paper's ironing problem: a half-disc tool on a long substrate.
+// The paper's ironing problem: a half-disc tool on a long substrate; in
+// 3-D a spherical tool on a slab (half of both by symmetry, z >= 0).
 #include <contact_dynamics/scenes/body_mesh.h>
 #include <contact_dynamics/scenes/scene_registry.h>
+
+#include <algorithm>
+#include <cmath>
 
 namespace ContactDynamics
 {
   namespace
   {
-    class Ironing : public BuiltInScene<2>
+    template <int dim>
+    class Ironing : public BuiltInScene<dim>
     {
+    public:
+      static void
+      declare_parameters(ParameterHandler &)
+      {}
+
     protected:
-      std::vector<BodyDefinition<2>>
+      std::vector<BodyDefinition<dim>>
       bodies() const override
       {
+        if constexpr (dim == 2)
+          return bodies_2d();
+        else
+          return bodies_3d();
+      }
+
+    private:
+      std::vector<BodyDefinition<2>>
+      bodies_2d() const
+      {
         using namespace MeshSteps;
+        const auto scaled = [this](const double n) { return this->scaled(n); };
         // 200 elements along the top; vertically a geometric progression
         // from the top element length down to coarser cells.
         const unsigned int nx = scaled(200);
@@ -29,14 +50,42 @@ namespace ContactDynamics
                                uniform(12, nx),
                                reversed(geometric(4, 12.0 / nx, scaled(30))))};
       }
+
+      // A sphere of radius 1 (its cap: x in [0.6, 1.8], z in [0, 0.6],
+      // 0.8 high above its lowest point (1.2, 1.52, 0)) on the slab
+      // [0, 6] x [0, 1.5] x [0, 1.5]; the plane z = 0 (the *_front
+      // surfaces) is a symmetry plane. Cells of 0.1 along the slab's top
+      // and on the cap, growing downwards and sideways.
+      std::vector<BodyDefinition<3>>
+      bodies_3d() const
+      {
+        using namespace MeshSteps;
+        const double h = 0.1 / this->refinement_factor;
+        const auto   n = [h](const double length) {
+          return std::max(1u, (unsigned int)std::round(length / h));
+        };
+        const std::vector<double> depth = geometric(1.5, h, n(0.5));
+        return {sphere_cap_body("tool",
+                                Point<3>(0.6, 1.52, 0),
+                                {uniform(1.2, n(1.2)),
+                                 geometric(0.8, h, n(0.4)),
+                                 uniform(0.6, n(0.6))},
+                                Point<3>(1.2, 1.52, 0),
+                                1.0),
+                box_body<3>("substrate",
+                            Point<3>(0, 0, 0),
+                            {uniform(6, n(6)), reversed(depth), depth},
+                            "substrate_")};
+      }
     };
   } // namespace
 
   SceneEntry
   ironing_scene()
   {
-    return planar_scene<Ironing>(
+    return scene_in_any_dimension<Ironing>(
       "ironing",
-      "the paper's half-disc tool pressed into and sliding along a substrate");
+      "the paper's half-disc tool pressed into and sliding along a "
+      "substrate (3-D: a spherical tool on a slab, half by symmetry)");
   }
 } // namespace ContactDynamics

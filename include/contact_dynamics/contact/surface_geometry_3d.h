@@ -86,12 +86,13 @@ namespace ContactDynamics
       // (|t| starts at 0.82 or more: below 0.3 the normal has turned to
       // within 17 degrees of the axis and the basis is ill-conditioned)
       AssertThrow(value_of(norm(t)) > 0.3,
-                  dealii::ExcMessage("3-D friction: a secondary node's normal has "
-                             "turned by more than about 37 degrees from its "
-                             "reference direction, towards the axis its "
-                             "tangents are built from (doc/contact.md, '3-D "
-                             "friction'); tangent bases that follow large "
-                             "rotations are not implemented yet."));
+                  dealii::ExcMessage(
+                    "3-D friction: the contact normal at a secondary node "
+                    "has turned by more than about 37 degrees from the "
+                    "reference normal its tangents are built from, towards "
+                    "their axis (doc/contact.md, '3-D friction'); tangent "
+                    "bases that follow large rotations are not implemented "
+                    "yet."));
       t /= norm(t);
       return {{t, cross(n, t)}};
     }

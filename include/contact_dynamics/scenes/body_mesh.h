@@ -128,6 +128,20 @@ namespace ContactDynamics
            const std::string                      &surface_prefix);
 
   /**
+   * The box from p0 on the tensor grid `steps` (box_body()) with its bottom
+   * moved onto the sphere of the given radius whose lowest point is
+   * `lowest` (p0[1] = lowest[1]), the layers above in proportion: a cap
+   * under a flat top. Surfaces: name_left, name_right, name_bottom (the
+   * cap), name_top, name_front, name_back.
+   */
+  BodyDefinition<3>
+  sphere_cap_body(const std::string                      &name,
+                  const Point<3>                         &p0,
+                  const std::vector<std::vector<double>> &steps,
+                  const Point<3>                         &lowest,
+                  const double                            radius);
+
+  /**
    * A rectangle [p0, p1] on the tensor grid of the given step sizes; its
    * surfaces are name_left, name_right, name_bottom, name_top.
    */
