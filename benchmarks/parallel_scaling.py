@@ -22,6 +22,11 @@ table. Scenes and their length:
                   --only bouncing_block_3d --solvers AMG
                   --table doc/bouncing-block-3d-table.md
                   --csv benchmarks/results/bouncing_block_3d.csv)
+  ironing_3d      prm/ironing/mortar_3d.prm to t = 1.3 (the indentation and
+                  0.3 of sliding, 1788 cells, 15,906 unknowns); the 3-D
+                  contact share (--only ironing_3d --solvers KLU,AMG
+                  --table doc/ironing-3d-table.md
+                  --csv benchmarks/results/ironing_3d.csv)
 VTU output is off: the measurements are of the solver.
 """
 import argparse
@@ -43,6 +48,7 @@ SCENES = {
     "ironing": ("prm/ironing/mortar.prm", 0.2),
     "bouncing_block": ("prm/bouncing_block/mortar_stabilized.prm", 1.0),
     "bouncing_block_3d": ("prm/bouncing_block/mortar_3d.prm", 0.3),
+    "ironing_3d": ("prm/ironing/mortar_3d.prm", 1.3),
 }
 SECTIONS = ["bulk assembly", "contact search", "contact assembly",
             "linear solve", "energies", "output"]

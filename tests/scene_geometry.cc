@@ -436,6 +436,70 @@ main()
       });
     Triangulation<3> tria3;
     scene3.create_triangulation(tria3);
+    // the 3-D ironing and Hertz: spherical caps (every vertex of the cap
+    // on the sphere), flat tops, boxes below
+    const auto check_cap = [](const std::string  &label,
+                              const Scene<3>     &scene,
+                              const std::string  &cap,
+                              const Point<3>     &centre,
+                              const double        top_area,
+                              const std::string  &box,
+                              const double        box_volume,
+                              const double        box_top_area) {
+      Triangulation<3> tria;
+      scene.create_triangulation(tria);
+      const auto &layout = scene.layout();
+      deallog << label << ": " << tria.n_active_cells() << " cells"
+              << std::endl;
+      double       off_sphere = 0;
+      unsigned int n_faces    = 0;
+      for (const auto &face : tria.active_face_iterators())
+        if (face->at_boundary() &&
+            face->boundary_id() == layout.surface_id(cap + "_bottom"))
+          {
+            ++n_faces;
+            for (const unsigned int v : face->vertex_indices())
+              off_sphere = std::max(off_sphere,
+                                    std::abs(face->vertex(v).distance(centre) - 1));
+          }
+      check_true(label + ": cap faces", n_faces > 10);
+      check_close(label + ": cap vertices on the sphere", off_sphere, 0, 1e-12);
+      check_close(label + ": measure of " + cap + "_top",
+                  surface_measure(tria, layout.surface_id(cap + "_top")).first,
+                  top_area,
+                  1e-12);
+      check_close(label + ": measure of " + box,
+                  body_measure(tria, layout.body_id(box)),
+                  box_volume,
+                  1e-12 * box_volume);
+      check_close(label + ": measure of " + box + "_top",
+                  surface_measure(tria, layout.surface_id(box + "_top")).first,
+                  box_top_area,
+                  1e-12 * box_top_area);
+      std::size_t unnamed = 0;
+      for (const auto &face : tria.active_face_iterators())
+        if (face->at_boundary() &&
+            face->boundary_id() == numbers::internal_face_boundary_id)
+          ++unnamed;
+      check_true(label + ": every boundary face named", unnamed == 0);
+    };
+    check_cap("ironing 3d",
+              make_scene<3>("ironing"),
+              "tool",
+              Point<3>(1.2, 2.52, 0),
+              1.2 * 0.6,
+              "substrate",
+              6 * 1.5 * 1.5,
+              6 * 1.5);
+    check_cap("hertz 3d",
+              make_scene<3>("hertz"),
+              "sphere",
+              Point<3>(0, 5, 0),
+              0.4 * 0.4,
+              "block",
+              4 * 4 * 4,
+              4 * 4);
+
     check_scene<3>("block 3d",
                    tria3,
                    scene3.layout(),
@@ -490,9 +554,9 @@ main()
   print_error("unknown body", [] {
     make_scene<2>("patch test").layout().body_id("top");
   });
-  print_error("ironing in 3-D", [] {
+  print_error("bar impact in 3-D", [] {
     Triangulation<3> tria;
-    make_scene<3>("ironing").create_triangulation(tria);
+    make_scene<3>("bar impact").create_triangulation(tria);
   });
   print_error("block size entries", [] {
     make_scene<2>("block", 1, [](ParameterHandler &prm) {
