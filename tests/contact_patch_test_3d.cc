@@ -14,7 +14,8 @@
 // not pass the test (as in 2-D, contact_patch_test): its nodal forces load
 // the primary surface unevenly, and the pressures are off by up to a
 // quarter (recorded, so that a change is noticed); the gaps of its nodes
-// are closed exactly. (The approximate Jacobian
+// are closed exactly. A monitored point given by its three coordinates
+// reports the pressure of its nearest node. (The approximate Jacobian
 // keeps the test fast; the exact one is checked in contact_jacobian_3d.)
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
@@ -56,6 +57,7 @@ end
 subsection Contact
   set Formulation = )" + std::string(nts ? "nts" : "mortar") + R"(
   set Pairs = upper_bottom: lower_top
+  set Monitored points = 0.5, 0.5, 0.5
   subsection Mortar
     set c_n = 1e6
     set Jacobian = approximate
@@ -121,6 +123,17 @@ end
               -top[1] / exact,
               1.,
               nts ? 0.01 : 1e-9);
+  // the monitored point (x, y, z): the nearest secondary node's pressure
+  // in contact_history.csv
+  const auto history = read_csv_columns("output_patch_3d/contact_history.csv");
+  check_true("contact_history.csv: time and one monitored node",
+             history.size() == 3);
+  for (const auto &[name, values] : history)
+    if (name.rfind("pressure(", 0) == 0)
+      check_close("monitored node's pressure / (E delta), " + name,
+                  values.back() / exact,
+                  1.,
+                  nts ? 0.5 : 1e-8);
   deallog.pop();
   return worst / exact;
 }

@@ -67,8 +67,9 @@ namespace ContactDynamics
     prm.declare_entry("Monitored points",
                       "",
                       Patterns::Anything(),
-                      "Points 'x, y' separated by ';' (reference "
-                      "coordinates); the nearest secondary node of each is "
+                      "Points 'x, y' (3-D: 'x, y, z') separated by ';' "
+                      "(reference coordinates); the nearest secondary node "
+                      "of each is "
                       "written to contact_history.csv at every step. A "
                       "point must lie within one element (the longest face "
                       "at that node) of a secondary node.");
@@ -210,25 +211,26 @@ namespace ContactDynamics
     for (const auto &text :
          Utilities::split_string_list(prm.get("Monitored points"), ';'))
       {
-        const auto xy = Utilities::split_string_list(text, ',');
-        AssertThrow(xy.size() == 2,
-                    ExcMessage("In 'Contact/Monitored points', '" + text +
-                               "' is not a point 'x, y'."));
-        try
+        const std::string what = "In 'Contact/Monitored points', '" + text +
+                                 "' is not a point 'x, y' (3-D: 'x, y, z')";
+        const auto coordinates = Utilities::split_string_list(text, ',');
+        AssertThrow(coordinates.size() == 2 || coordinates.size() == 3,
+                    ExcMessage(what + "."));
+        std::vector<double> point;
+        for (const auto &c : coordinates)
           {
-            monitored_points.emplace_back(Utilities::string_to_double(xy[0]),
-                                          Utilities::string_to_double(xy[1]));
+            try
+              {
+                point.push_back(Utilities::string_to_double(c));
+              }
+            catch (...)
+              {
+                AssertThrow(false, ExcMessage(what + "."));
+              }
+            AssertThrow(std::isfinite(point.back()),
+                        ExcMessage(what + " of finite numbers."));
           }
-        catch (...)
-          {
-            AssertThrow(false,
-                        ExcMessage("In 'Contact/Monitored points', '" + text +
-                                   "' is not a point 'x, y'."));
-          }
-        AssertThrow(std::isfinite(monitored_points.back()[0]) &&
-                      std::isfinite(monitored_points.back()[1]),
-                    ExcMessage("In 'Contact/Monitored points', '" + text +
-                               "' is not a point 'x, y' of finite numbers."));
+        monitored_points.push_back(point);
       }
   }
 
@@ -263,13 +265,13 @@ namespace ContactDynamics
     prm.leave_subsection();
     prm.leave_subsection();
 
-    if (dim == 3)
-      // (what 3-D contact does not have yet; issue 17)
-      AssertThrow(contact.monitored_points.empty(),
-                  ExcMessage("Contact/Monitored points: the points are "
-                             "'x, y' pairs, for 2-D only so far; in 3-D "
-                             "leave the entry empty (contact_surface-*.csv "
-                             "has every secondary node)."));
+    for (const auto &point : contact.monitored_points)
+      AssertThrow(point.size() == dim,
+                  ExcMessage("In 'Contact/Monitored points', a point has " +
+                             std::to_string(point.size()) +
+                             " coordinates; with Dimension = " +
+                             std::to_string(dim) + " give " +
+                             (dim == 2 ? "'x, y'." : "'x, y, z'.")));
 
     switch (contact.formulation)
       {
@@ -356,7 +358,7 @@ namespace ContactDynamics
       }
 
     // the output follows the nearest secondary node of a monitored point
-    for (const Point<2> &point : contact.monitored_points)
+    for (const auto &point : contact.monitored_points)
       {
         double       best = std::numeric_limits<double>::max();
         unsigned int pair = 0, node = 0;
@@ -364,7 +366,7 @@ namespace ContactDynamics
           for (unsigned int j = 0; j < surfaces[p][0]->n_nodes(); ++j)
             {
               double d = 0;
-              for (unsigned int k = 0; k < 2; ++k)
+              for (unsigned int k = 0; k < dim; ++k)
                 d += std::pow(surfaces[p][0]->reference[j][k] - point[k], 2);
               if (d < best)
                 {
@@ -377,16 +379,25 @@ namespace ContactDynamics
           break;
         const ContactSurface<dim> &surface = *surfaces[pair][0];
         double                     size    = 0;
+        // (the face's length in 2-D, a diagonal in 3-D)
         for (const unsigned int f : surface.node_faces[node])
           size = std::max(size,
                           surface.reference[surface.faces[f][0]].distance(
-                            surface.reference[surface.faces[f][1]]));
+                            surface.reference[surface.faces[f].back()]));
         std::ostringstream message;
         const Point<dim>  &X = surface.reference[node];
-        message << "In 'Contact/Monitored points', the point (" << point[0]
-                << ", " << point[1] << ") is " << std::sqrt(best)
-                << " from the nearest secondary contact node, (" << X[0] << ", "
-                << X[1] << ") of the pair '" << contact.pairs[pair].name
+        const auto coordinates = [](const auto &x) {
+          std::ostringstream text;
+          text << '(';
+          for (unsigned int k = 0; k < dim; ++k)
+            text << (k ? ", " : "") << x[k];
+          return text.str() + ')';
+        };
+        message << "In 'Contact/Monitored points', the point "
+                << coordinates(point) << " is " << std::sqrt(best)
+                << " from the nearest secondary contact node, "
+                << coordinates(X) << " of the pair '"
+                << contact.pairs[pair].name
                 << "', more than the element size there (" << size
                 << "). A monitored point must lie on a secondary surface, "
                    "within one element of one of its nodes (reference "

@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <cmath>
 #include <iomanip>
+#include <sstream>
 
 namespace ContactDynamics
 {
@@ -30,7 +31,7 @@ namespace ContactDynamics
             for (unsigned int j = 0; j < reference.size(); ++j)
               {
                 double d = 0;
-                for (unsigned int k = 0; k < 2; ++k)
+                for (unsigned int k = 0; k < dim; ++k)
                   d += std::pow(reference[j][k] - point[k], 2);
                 if (d < best)
                   {
@@ -50,8 +51,11 @@ namespace ContactDynamics
     for (const auto &m : monitored)
       {
         const auto &X = contact.secondary_nodes(m.first).reference[m.second];
-        *history << ",pressure(" << X[0] << " " << X[1] << ")"
-                 << ",gap(" << X[0] << " " << X[1] << ")";
+        std::ostringstream where;
+        for (unsigned int k = 0; k < dim; ++k)
+          where << (k ? " " : "") << X[k];
+        *history << ",pressure(" << where.str() << ")"
+                 << ",gap(" << where.str() << ")";
       }
     *history << std::endl;
     check_written(*history, history_name());

@@ -47,7 +47,8 @@ namespace ContactDynamics
     };
     Formulation              formulation = Formulation::none;
     std::vector<ContactPair> pairs;
-    std::vector<Point<2>>    monitored_points;
+    // 'x, y' or 'x, y, z' (create_contact_formulation() checks the count)
+    std::vector<std::vector<double>> monitored_points;
     bool                     allow_initial_penetration = false;
     std::vector<std::string> body_names; // of the scene, for messages
 
@@ -287,7 +288,7 @@ namespace ContactDynamics
     secondary_nodes(const unsigned int pair) const = 0;
 
     /** Reference points whose nearest secondary nodes the output follows. */
-    virtual const std::vector<Point<2>> &
+    virtual const std::vector<std::vector<double>> &
     monitored_points() const = 0;
   };
 

@@ -212,7 +212,7 @@ namespace ContactDynamics
               pairs[pair].nodes};
     }
 
-    const std::vector<Point<2>> &
+    const std::vector<std::vector<double>> &
     monitored_points() const override
     {
       return contact.monitored_points;
