@@ -31,7 +31,8 @@ for f in "${factors[@]}"; do
   column() { # section, column of the timer table (3: calls, 4: seconds)
     awk -F'|' -v s="$1" -v c="$2" '{n=$2; gsub(/^ +| +$/, "", n); if (n == s) {t=$c; gsub(/[ s]/, "", t); print t}}' "$dir.log"
   }
-  faces=$(python3 -c "print(max(1, round(1.2 * $f / 0.1)) * max(1, round(0.6 * $f / 0.1)))")
+  # (as the scene counts them: std::round(length / (0.1 / F)), halves up)
+  faces=$(python3 -c "import math; h = 0.1 / $f; n = lambda l: max(1, math.floor(l / h + 0.5)); print(n(1.2) * n(0.6))")
   cells=$(sed -n "s/.*: \([0-9]*\) cells.*/\1/p" "$dir.log")
   unknowns=$(sed -n "s/.* cells, \([0-9]*\) unknowns.*/\1/p" "$dir.log")
   steps=$(sed -n 's/.*after \([0-9]*\) steps.*/\1/p' "$dir.log")

@@ -379,11 +379,18 @@ namespace ContactDynamics
           break;
         const ContactSurface<dim> &surface = *surfaces[pair][0];
         double                     size    = 0;
-        // (the face's length in 2-D, a diagonal in 3-D)
+        // (the face's length in 2-D, its longer diagonal in 3-D)
         for (const unsigned int f : surface.node_faces[node])
-          size = std::max(size,
-                          surface.reference[surface.faces[f][0]].distance(
-                            surface.reference[surface.faces[f].back()]));
+          {
+            const auto &x = surface.faces[f];
+            size          = std::max(size,
+                            surface.reference[x[0]].distance(
+                              surface.reference[x.back()]));
+            if constexpr (dim == 3)
+              size = std::max(size,
+                              surface.reference[x[1]].distance(
+                                surface.reference[x[2]]));
+          }
         std::ostringstream message;
         const Point<dim>  &X = surface.reference[node];
         const auto coordinates = [](const auto &x) {

@@ -627,6 +627,9 @@ namespace ContactDynamics
                                  "cap"));
           v[1] = bottom + (v[1] - p0[1]) / (top - p0[1]) * (top - bottom);
         }
+      // refinement keeps the cap on the sphere
+      m.curved_surface = name + "_bottom";
+      m.curve_center   = lowest + Point<3>(0, radius, 0);
       // the sides and the top stay planes; the rest is the cap
       const auto planes = m.surface_of;
       m.surface_of      = [planes, name](const Point<3> &c) {

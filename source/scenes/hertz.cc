@@ -24,8 +24,8 @@ namespace ContactDynamics
           Patterns::Double(1e-12),
           "Radius of the half-cylinder (flat face on top, arc at the "
           "bottom) pressed onto the block; in 3-D of the sphere whose cap "
-          "(a quarter: x, z >= 0, up to 0.4 R from the axis, 0.5 R high "
-          "above its lowest point) is pressed onto the block.");
+          "(a quarter: x, z in [0, 0.4 R], 0.5 R high above its lowest "
+          "point) is pressed onto the block.");
         prm.declare_entry(
           "Block width",
           "8",
@@ -43,7 +43,7 @@ namespace ContactDynamics
           "0",
           Patterns::Double(0),
           "Initial vertical distance between the lowest point of the "
-          "cylinder and the top of the block.");
+          "cylinder (3-D: the sphere) and the top of the block.");
         prm.leave_subsection();
       }
 
@@ -88,6 +88,17 @@ namespace ContactDynamics
             const std::vector<double> block_x = graded(fine, w / 2, ratio);
             const double cap_width = 0.4 * R, cap_height = 0.5 * R,
                          y0        = h + gap;
+            AssertThrow(w / 2 >= cap_width && h >= cap_height,
+                        ExcMessage(
+                          "Scene/Hertz: in 3-D the block (Block width / 2 = " +
+                          std::to_string(w / 2) + ", Block height = " +
+                          std::to_string(h) +
+                          ") must be at least as wide as the sphere's cap "
+                          "(0.4 Radius = " +
+                          std::to_string(cap_width) + ") and as high as it "
+                          "(0.5 Radius = " +
+                          std::to_string(cap_height) +
+                          "); Hertz's half-space wants it much larger."));
             const std::vector<double> cap_x = graded(fine, cap_width, ratio);
             return {sphere_cap_body("sphere",
                                     Point<3>(0, y0, 0),
