@@ -383,7 +383,6 @@ namespace ContactDynamics
       return false;
     }
 
-
     /**
      * Newton steps in the number type, from a converged value, that give
      * exact derivatives up to the number's order: the error of the
