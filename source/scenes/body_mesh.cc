@@ -135,6 +135,21 @@ namespace ContactDynamics
   {
     using namespace MeshSteps;
 
+    // A scene whose Refinement factor asks for more cells than any machine
+    // this code runs on can hold is refused before it allocates anything.
+    void
+    check_cell_count(const std::string &body, const double cells)
+    {
+      constexpr double max_cells = 1e7;
+      AssertThrow(cells <= max_cells,
+                  ExcMessage("The body '" + body + "' would have " +
+                             std::to_string(static_cast<long long>(cells)) +
+                             " cells, more than the " +
+                             std::to_string(static_cast<long long>(max_cells)) +
+                             " allowed per body. Lower Scene/Refinement "
+                             "factor."));
+    }
+
     BodyMesh<2>
     rectangle_mesh(const Point<2>            &p0,
                    const Point<2>            &p1,
@@ -398,6 +413,7 @@ namespace ContactDynamics
                  const std::vector<double> &x_steps,
                  const std::vector<double> &y_steps)
   {
+    check_cell_count(name, 1. * x_steps.size() * y_steps.size());
     return {name, box_surface_names(name + "_", 2), [=]() {
               return rectangle_mesh(p0, p1, x_steps, y_steps, name + "_");
             }};
@@ -565,6 +581,10 @@ namespace ContactDynamics
            const std::string                      &surface_prefix)
   {
     AssertThrow(steps.size() == dim, ExcInternalError());
+    double cells = 1;
+    for (const auto &s : steps)
+      cells *= s.size();
+    check_cell_count(name, cells);
     Point<dim> p1 = p0;
     for (unsigned int d = 0; d < dim; ++d)
       for (const double h : steps[d])
@@ -588,6 +608,10 @@ namespace ContactDynamics
            const std::vector<unsigned int> &n,
            const std::string               &surface_prefix)
   {
+    double cells = 1;
+    for (const unsigned int k : n)
+      cells *= k;
+    check_cell_count(name, cells);
     return {name,
             box_surface_names(surface_prefix, dim),
             [p0, p1, n, surface_prefix]() {

@@ -84,6 +84,28 @@ namespace ContactDynamics
         return 1 + derivative_order<typename Number::value_type>();
     }
 
+    /** The values of a vector with AD components. */
+    template <typename Number>
+    Vec3<double>
+    values(const Vec3<Number> &v)
+    {
+      Vec3<double> d;
+      for (unsigned int i = 0; i < 3; ++i)
+        d[i] = value_of(v[i]);
+      return d;
+    }
+
+    /** The values of the nodes of a face with AD coordinates. */
+    template <typename Number>
+    std::array<Vec3<double>, 4>
+    values(const std::array<Vec3<Number>, 4> &x)
+    {
+      std::array<Vec3<double>, 4> d;
+      for (unsigned int a = 0; a < 4; ++a)
+        d[a] = values(x[a]);
+      return d;
+    }
+
     /** The tangents dx/dxi and dx/deta of a face at (xi, eta). */
     template <typename Number>
     std::array<Vec3<Number>, 2>
@@ -111,11 +133,7 @@ namespace ContactDynamics
           // derivatives with products of AD numbers and doubles only
           const double xi_0 = value_of(xi), eta_0 = value_of(eta);
           const auto   N    = shape(xi_0, eta_0);
-          std::array<Vec3<double>, 4> x_0;
-          for (unsigned int a = 0; a < 4; ++a)
-            for (unsigned int d = 0; d < 3; ++d)
-              x_0[a][d] = value_of(x[a][d]);
-          const auto   t    = tangents(x_0, xi_0, eta_0);
+          const auto   t    = tangents(values(x), xi_0, eta_0);
           const Number d_xi = xi - xi_0, d_eta = eta - eta_0;
           for (unsigned int d = 0; d < 3; ++d)
             p[d] = N[0] * x[0][d] + N[1] * x[1][d] + N[2] * x[2][d] +
@@ -418,20 +436,13 @@ namespace ContactDynamics
           // step with J frozen, whose residual is linear in the AD inputs
           // (a sixth of the operations of the step in the AD type, which
           // dominated the 3-D mortar's cost).
-          std::array<Vec3<double>, 4> x_d;
-          Vec3<double>                m;
-          for (unsigned int d = 0; d < 3; ++d)
-            {
-              for (unsigned int a = 0; a < 4; ++a)
-                x_d[a][d] = value_of(x[a][d]);
-              m[d] = -value_of(n[d]);
-            }
-          const auto         t   = tangents(x_d, xi, eta);
-          const double       det = cross(t[0], t[1]) * m;
-          const Vec3<double> rows[3] = {cross(t[1], m),
-                                        cross(m, t[0]),
-                                        cross(t[0], t[1])};
-          const auto         N       = shape(xi, eta);
+          const Vec3<double>    m       = -values(n);
+          const auto            t       = tangents(values(x), xi, eta);
+          const double          det     = cross(t[0], t[1]) * m;
+          const Vec3<double>    rows[3] = {cross(t[1], m),
+                                           cross(m, t[0]),
+                                           cross(t[0], t[1])};
+          const auto            N       = shape(xi, eta);
           std::array<Number, 3> y{{Number(xi), Number(eta), Number(alpha)}};
           for (unsigned int d = 0; d < 3; ++d)
             {
@@ -626,19 +637,8 @@ namespace ContactDynamics
                                                 tolerance * diameter);
       if (clip.empty())
         return false;
-      const auto to_double = [](const Vec3<Number> &v) {
-        Vec3<double> d;
-        for (unsigned int i = 0; i < 3; ++i)
-          d[i] = value_of(v[i]);
-        return d;
-      };
-      std::array<Vec3<double>, 4> xs_d, xm_d;
-      for (unsigned int a = 0; a < 4; ++a)
-        {
-          xs_d[a] = to_double(xs[a]);
-          xm_d[a] = to_double(xm[a]);
-        }
-      const Vec3<double>                normal_d = to_double(normal);
+      const std::array<Vec3<double>, 4> xs_d = values(xs), xm_d = values(xm);
+      const Vec3<double>                normal_d = values(normal);
       std::vector<SegmentPoint<Number>> found;
       for (const auto &triangle : triangulate(clip))
         {
@@ -657,13 +657,13 @@ namespace ContactDynamics
               // missing overlap
               AssertThrow(
                 project_along_direction(xs_d,
-                                        to_double(p),
+                                        values(p),
                                         normal_d,
                                         s[0],
                                         s[1],
                                         s[2]) &&
                   project_along_direction(xm_d,
-                                          to_double(p),
+                                          values(p),
                                           normal_d,
                                           m[0],
                                           m[1],

@@ -23,26 +23,6 @@ namespace ContactDynamics
     template <typename Number>
     using NodeMap = std::map<unsigned int, Vec3<Number>>;
 
-    template <typename Number>
-    Vec3<double>
-    values(const Vec3<Number> &x)
-    {
-      Vec3<double> v;
-      for (unsigned int d = 0; d < 3; ++d)
-        v[d] = value_of(x[d]);
-      return v;
-    }
-
-    template <typename Number>
-    std::array<Vec3<double>, 4>
-    values(const std::array<Vec3<Number>, 4> &x)
-    {
-      std::array<Vec3<double>, 4> v;
-      for (unsigned int a = 0; a < 4; ++a)
-        v[a] = values(x[a]);
-      return v;
-    }
-
     /** The four nodes of a face, from a node map. */
     template <typename Number>
     std::array<Vec3<Number>, 4>
