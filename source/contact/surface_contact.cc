@@ -447,7 +447,11 @@ namespace ContactDynamics
   SurfaceContact<dim>::update_candidates(const VectorType &u)
   {
     if (gap_field.size() != u.size())
-      gap_field.reinit(owned_dofs, comm);
+      {
+        gap_field.reinit(owned_dofs, comm);
+        for (auto &field : slip_field)
+          field.reinit(owned_dofs, comm);
+      }
     // before the first commit the committed state is the reference
     // configuration (as for PairData::position)
     if (committed_u.size() != u.size())
@@ -1004,6 +1008,8 @@ namespace ContactDynamics
     work.commit(u, old_u);
     committed_u = u; // for the swept search of the next step
     gap_field   = 0;
+    for (auto &field : slip_field)
+      field = 0;
     for (auto &pair : pairs)
       for (unsigned int j = 0; j < pair.nodes.size(); ++j)
         {
@@ -1023,10 +1029,16 @@ namespace ContactDynamics
             complementarity.holds_contact() && node.projected &&
             node.normalized_gap() <= complementarity.capture_tolerance;
           if (pair.owned_node[j])
-            gap_field(pair.secondary.dofs[j][dim]) = node.normalized_gap();
+            {
+              gap_field(pair.secondary.dofs[j][dim]) = node.normalized_gap();
+              for (unsigned int a = 0; a + 1 < dim; ++a)
+                slip_field[a](pair.secondary.dofs[j][dim]) = node.slip_rate[a];
+            }
           pair.position[j] = pair.secondary.position(j, u);
         }
     gap_field.compress(VectorOperation::insert);
+    for (auto &field : slip_field)
+      field.compress(VectorOperation::insert);
   }
 
   template <int dim>

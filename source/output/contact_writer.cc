@@ -107,7 +107,8 @@ namespace ContactDynamics
   {
     out << "pair,node,x,y," << (dim == 3 ? "z," : "")
         << "gap,pressure,active,tangential_traction,"
-        << (dim == 3 ? "tangential_traction_2," : "") << "stick\n";
+        << (dim == 3 ? "tangential_traction_2," : "") << "stick,slip_rate"
+        << (dim == 3 ? ",slip_rate_2" : "") << '\n';
     for (unsigned int p = 0; p < contact.n_pairs(); ++p)
       {
         const SecondaryNodes<dim> nodes = contact.secondary_nodes(p);
@@ -133,7 +134,10 @@ namespace ContactDynamics
                 << node.active << ',';
             for (unsigned int a = 0; a + 1 < dim; ++a)
               out << node.tangential[a] << ',';
-            out << node.stick << '\n';
+            out << node.stick;
+            for (unsigned int a = 0; a + 1 < dim; ++a)
+              out << ',' << node.slip_rate[a];
+            out << '\n';
           }
       }
   }

@@ -180,10 +180,22 @@ namespace ContactDynamics
     void
     check_initial_state(std::ostream &log) const override;
 
+    /**
+     * The normalized gap and, with friction, the slip rates along the
+     * nodal tangents (of the last committed step).
+     */
     std::vector<std::pair<const VectorType *, std::string>>
     nodal_output_fields() const override
     {
-      return {{&gap_field, "normal_gap"}};
+      std::vector<std::pair<const VectorType *, std::string>> fields{
+        {&gap_field, "normal_gap"}};
+      if (friction)
+        {
+          fields.emplace_back(&slip_field[0], "slip_rate");
+          if (dim == 3)
+            fields.emplace_back(&slip_field[1], "slip_rate_2");
+        }
+      return fields;
     }
 
     const std::vector<NodeState> &
@@ -472,8 +484,9 @@ namespace ContactDynamics
     bool         friction = false;
     unsigned int n_stick = 0, n_slip = 0;
     VectorType   gap_field; // normalized gap at the multiplier dofs
-    unsigned int n_active         = 0;
-    double       total_force[dim] = {};
+    std::array<VectorType, dim - 1> slip_field; // slip rates, likewise
+    unsigned int                    n_active         = 0;
+    double                          total_force[dim] = {};
   };
 } // namespace ContactDynamics
 
