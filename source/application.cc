@@ -2,6 +2,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <contact_dynamics/application.h>
+#include <contact_dynamics/contact/contact_formulation.h>
 #include <contact_dynamics/output/postprocessing.h>
 #include <contact_dynamics/parallel.h>
 #include <contact_dynamics/scenes/scene_registry.h>
@@ -42,7 +43,9 @@ namespace ContactDynamics
     {
       Scene<dim> scene;
       scene.parse_parameters(prm);
-      return scene.layout();
+      SceneLayout layout    = scene.layout();
+      layout.obstacle_names = obstacle_names(prm);
+      return layout;
     }
 
     template <int dim>
@@ -233,6 +236,7 @@ namespace ContactDynamics
     ParameterHandler first;
     declare_dimension(first);
     Scene<2>::declare_parameters(first);
+    declare_obstacle_names(first);
     first.parse_input(filename, "", true);
     const unsigned int dim = first.get_integer("Dimension");
     const SceneLayout  layout =
@@ -294,6 +298,7 @@ namespace ContactDynamics
           ParameterHandler first;
           declare_dimension(first);
           Scene<2>::declare_parameters(first);
+          declare_obstacle_names(first);
           declare_dimension(prm);
           Simulator<2>::declare_parameters(prm, layout_from<2>(first));
         }

@@ -70,7 +70,7 @@ namespace ContactDynamics
     OutputParameters::declare_parameters(prm);
     prm.leave_subsection();
 
-    declare_contact_parameters(prm);
+    declare_contact_parameters(prm, layout, dim);
 
     prm.enter_subsection("Parallel");
     ParallelParameters::declare_parameters(prm);
@@ -85,7 +85,8 @@ namespace ContactDynamics
     , mpi_communicator(comm)
   {
     scene.parse_parameters(prm);
-    layout = scene.layout();
+    layout                = scene.layout();
+    layout.obstacle_names = obstacle_names(prm);
     for (const auto &name : layout.body_names)
       {
         BodyParameters body;
@@ -634,6 +635,7 @@ namespace ContactDynamics
     if (contact)
       {
         // gaps at the initial state: overlapping bodies stop the run here
+        contact->set_times(time, time);
         if (contact->update_candidates(u_ghost))
           setup_sparsity();
         VectorType contact_residual(residual), contact_full(residual_full_old);
@@ -951,7 +953,10 @@ namespace ContactDynamics
     }
 
     if (contact)
-      contact->start_step();
+      {
+        contact->set_times(time, t_new);
+        contact->start_step();
+      }
     NewtonSolver::Result result;
     {
       TimerOutput::Scope t(*timer, "Newton solve");
@@ -1028,6 +1033,7 @@ namespace ContactDynamics
         contact->commit_step(u_ghost, u);
         energies.kinetic += apply_velocity_update();
         energies.frictional = contact->dissipated_energy();
+        energies.obstacle   = contact->obstacle_work();
       }
     u.swap(u_new);
     v.swap(v_new);

@@ -44,11 +44,13 @@ namespace ContactDynamics
     double external   = 0; // work of reactions and body forces
     double initial    = 0; // kinetic + elastic at t = 0
     double frictional = 0; // dissipated by contact friction
+    double obstacle   = 0; // work of moving rigid obstacles on the bodies
 
     double
     error() const
     {
-      return kinetic + elastic + dissipated + frictional - external - initial;
+      return kinetic + elastic + dissipated + frictional - external - obstacle -
+             initial;
     }
   };
 

@@ -77,11 +77,33 @@ namespace ContactDynamics
 
   void
   ContactParameters::parse_parameters(ParameterHandler  &prm,
-                                      const SceneLayout &layout)
+                                      const SceneLayout &layout,
+                                      const unsigned int dim)
   {
     formulation = formulation_names.value(prm.get("Formulation"));
     body_names  = layout.body_names;
     pairs.clear();
+    obstacles.clear();
+    for (const auto &name : layout.obstacle_names)
+      {
+        RigidObstacleParameters obstacle;
+        prm.enter_subsection(RigidObstacleParameters::subsection_name(name));
+        obstacle.parse_parameters(prm, dim, name);
+        prm.leave_subsection();
+        AssertThrow(layout.surfaces.count(name) == 0,
+                    ExcMessage("In 'Contact/Rigid obstacles', the name '" +
+                               name +
+                               "' is also a surface of the scene: give the "
+                               "obstacle another name."));
+        obstacles.push_back(obstacle);
+      }
+    const auto obstacle_index = [&](const std::string &text) {
+      const std::string name = Utilities::trim(text);
+      for (unsigned int k = 0; k < obstacles.size(); ++k)
+        if (obstacles[k].name == name)
+          return int(k);
+      return -1;
+    };
     const auto side = [&](const std::string &text, const std::string &entry) {
       std::vector<types::boundary_id> ids;
       for (const auto &name : Utilities::split_string_list(text, '+'))
@@ -123,9 +145,31 @@ namespace ContactDynamics
                     ExcMessage("In 'Contact/Pairs', the entry '" + entry +
                                "' is not of the form 'secondary: primary'."));
         ContactPair pair;
+        pair.name = entry;
+        for (const auto &name :
+             Utilities::split_string_list(entry.substr(0, colon), '+'))
+          AssertThrow(obstacle_index(name) < 0,
+                      ExcMessage("In 'Contact/Pairs', the entry '" + entry +
+                                 "' has the rigid obstacle '" + name +
+                                 "' on the secondary side: an obstacle "
+                                 "carries no multipliers and can only be the "
+                                 "primary side, alone."));
         pair.secondary = side(entry.substr(0, colon), entry);
-        pair.primary   = side(entry.substr(colon + 1), entry);
-        pair.name      = entry;
+        pair.obstacle  = obstacle_index(entry.substr(colon + 1));
+        if (pair.obstacle >= 0)
+          {
+            // an obstacle touches any body: no further checks
+            pairs.push_back(pair);
+            continue;
+          }
+        for (const auto &name :
+             Utilities::split_string_list(entry.substr(colon + 1), '+'))
+          AssertThrow(obstacle_index(name) < 0,
+                      ExcMessage("In 'Contact/Pairs', the entry '" + entry +
+                                 "' joins the rigid obstacle '" + name +
+                                 "' with other surfaces: an obstacle is a "
+                                 "primary side alone."));
+        pair.primary = side(entry.substr(colon + 1), entry);
         for (const auto *ids : {&pair.secondary, &pair.primary})
           for (auto id = ids->begin(); id != ids->end(); ++id)
             AssertThrow(std::find(id + 1, ids->end(), *id) == ids->end(),
@@ -234,11 +278,64 @@ namespace ContactDynamics
       }
   }
 
+  namespace
+  {
+    void
+    declare_obstacle_entry(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Rigid obstacles",
+        "",
+        Patterns::Anything(),
+        "Names of rigid obstacles, separated by ','; each gets a subsection "
+        "'Rigid obstacle <name>' (shape and prescribed motion) and may be "
+        "the primary side of pairs in 'Pairs' (e.g. 'block_bottom: "
+        "ground'). An obstacle is an analytic surface with no mesh and no "
+        "unknowns; its reaction force and torque are written to "
+        "statistics.csv.");
+    }
+  } // namespace
+
   void
-  declare_contact_parameters(ParameterHandler &prm)
+  declare_obstacle_names(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    declare_obstacle_entry(prm);
+    prm.leave_subsection();
+  }
+
+  std::vector<std::string>
+  obstacle_names(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    const std::string text = prm.get("Rigid obstacles");
+    prm.leave_subsection();
+    const auto names = Utilities::split_string_list(text, ',');
+    for (auto name = names.begin(); name != names.end(); ++name)
+      AssertThrow(!name->empty() &&
+                    name->find_first_of(":;+") == std::string::npos &&
+                    std::find(name + 1, names.end(), *name) == names.end(),
+                  ExcMessage("'Contact/Rigid obstacles' = '" + text +
+                             "': the name '" + *name +
+                             "' is empty, repeated or contains ':', ';' or "
+                             "'+'."));
+    return names;
+  }
+
+  void
+  declare_contact_parameters(ParameterHandler  &prm,
+                             const SceneLayout &layout,
+                             const unsigned int dim)
   {
     prm.enter_subsection("Contact");
     ContactParameters::declare_parameters(prm);
+    declare_obstacle_entry(prm);
+    for (const auto &name : layout.obstacle_names)
+      {
+        prm.enter_subsection(RigidObstacleParameters::subsection_name(name));
+        RigidObstacleParameters::declare_parameters(prm, dim);
+        prm.leave_subsection();
+      }
     prm.enter_subsection("Mortar");
     MortarParameters::declare_parameters(prm);
     prm.leave_subsection();
@@ -254,7 +351,7 @@ namespace ContactDynamics
   {
     prm.enter_subsection("Contact");
     ContactParameters contact;
-    contact.parse_parameters(prm, layout);
+    contact.parse_parameters(prm, layout, dim);
     prm.enter_subsection("Mortar");
     MortarParameters mortar;
     mortar.parse_parameters(prm);
@@ -267,11 +364,11 @@ namespace ContactDynamics
 
     for (const auto &point : contact.monitored_points)
       AssertThrow(point.size() == dim,
-                  ExcMessage("In 'Contact/Monitored points', a point has " +
-                             std::to_string(point.size()) +
-                             " coordinates; with Dimension = " +
-                             std::to_string(dim) + " give " +
-                             (dim == 2 ? "'x, y'." : "'x, y, z'.")));
+                  ExcMessage(
+                    "In 'Contact/Monitored points', a point has " +
+                    std::to_string(point.size()) +
+                    " coordinates; with Dimension = " + std::to_string(dim) +
+                    " give " + (dim == 2 ? "'x, y'." : "'x, y, z'.")));
 
     switch (contact.formulation)
       {
@@ -392,8 +489,8 @@ namespace ContactDynamics
                                 surface.reference[x[2]]));
           }
         std::ostringstream message;
-        const Point<dim>  &X = surface.reference[node];
-        const auto coordinates = [](const auto &x) {
+        const Point<dim>  &X           = surface.reference[node];
+        const auto         coordinates = [](const auto &x) {
           std::ostringstream text;
           text << '(';
           for (unsigned int k = 0; k < dim; ++k)

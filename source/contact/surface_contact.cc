@@ -312,8 +312,12 @@ namespace ContactDynamics
       {
         auto &pair = pairs[p];
         pair.secondary.build(dof_handler, contact.pairs[p].secondary, 2 * dim);
-        pair.primary.build(dof_handler, contact.pairs[p].primary, dim);
-        AssertThrow(pair.secondary.n_faces() > 0 && pair.primary.n_faces() > 0,
+        if (contact.pairs[p].obstacle >= 0)
+          set_up_obstacle(pair, contact.obstacles[contact.pairs[p].obstacle]);
+        else
+          pair.primary.build(dof_handler, contact.pairs[p].primary, dim);
+        AssertThrow(pair.secondary.n_faces() > 0 &&
+                      (pair.obstacle || pair.primary.n_faces() > 0),
                     ExcMessage("The contact pair '" + contact.pairs[p].name +
                                "' has an empty surface."));
         pair.nodes.assign(pair.secondary.n_nodes(), NodeState());
@@ -396,6 +400,96 @@ namespace ContactDynamics
 
   template <int dim>
   void
+  SurfaceContact<dim>::set_up_obstacle(
+    PairData                      &pair,
+    const RigidObstacleParameters &parameters) const
+  {
+    pair.obstacle = std::make_shared<const RigidObstacle<dim>>(parameters);
+    pair.committed_place = pair.obstacle->placement(committed_time);
+    pair.trial_place     = pair.obstacle->placement(trial_time);
+    pair.reaction = pair.committed_reaction = {};
+    const auto &s                           = pair.secondary;
+    pair.dof_node.clear();
+    pair.tangent_axis.assign(s.n_nodes(), 0);
+    for (unsigned int j = 0; j < s.n_nodes(); ++j)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          pair.dof_node[s.dofs[j][d]] = {j, d};
+        // the axis least aligned with the obstacle's normal at the node
+        Tensor<1, dim> normal;
+        pair.obstacle->signed_distance(pair.committed_place,
+                                       Tensor<1, dim>(s.reference[j]),
+                                       normal);
+        for (unsigned int d = 1; d < dim; ++d)
+          if (std::abs(normal[d]) < std::abs(normal[pair.tangent_axis[j]]))
+            pair.tangent_axis[j] = d;
+      }
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::set_times(const double committed, const double trial)
+  {
+    committed_time = committed;
+    trial_time     = trial;
+    for (auto &pair : pairs)
+      if (pair.obstacle)
+        {
+          pair.committed_place = pair.obstacle->placement(committed);
+          pair.trial_place     = pair.obstacle->placement(trial);
+        }
+  }
+
+  template <int dim>
+  std::vector<types::global_dof_index>
+  SurfaceContact<dim>::obstacle_patch_unknowns(const PairData    &pair,
+                                               const unsigned int patch) const
+  {
+    const auto                           nodes = patch_nodes(pair, patch);
+    std::vector<types::global_dof_index> unknowns;
+    for (const unsigned int n : nodes)
+      for (unsigned int d = 0; d < dim; ++d)
+        unknowns.push_back(pair.secondary.dofs[n][d]);
+    for (unsigned int c = dim; c < 2 * dim; ++c)
+      for (const unsigned int n : nodes)
+        unknowns.push_back(pair.secondary.dofs[n][c]);
+    return unknowns;
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::add_reaction(PairData          &pair,
+                                    const PatchForces &forces,
+                                    const VectorType  &u) const
+  {
+    // the residual rows are minus the forces on the bodies: the forces on
+    // the obstacle
+    const auto moment = [&](const types::global_dof_index row,
+                            const double                  value,
+                            Tensor<1, dim>               &force,
+                            Tensor<1, 3>                 &torque) {
+      const auto [node, d] = pair.dof_node.at(row);
+      force[d] += value;
+      const Tensor<1, dim> r =
+        pair.secondary.position(node, u) - pair.trial_place.center;
+      // r x (value e_d)
+      Tensor<1, 3> r3, f3;
+      for (unsigned int i = 0; i < dim; ++i)
+        r3[i] = r[i];
+      f3[d] = value;
+      torque += cross_product_3d(r3, f3);
+    };
+    for (const auto &r : forces.rows)
+      moment(r.row, r.value, pair.reaction.force, pair.reaction.torque);
+    for (const auto &t : forces.tangential)
+      moment(t.first,
+             t.second,
+             pair.reaction.friction_force,
+             pair.reaction.friction_torque);
+  }
+
+  template <int dim>
+  void
   SurfaceContact<dim>::add_constraints(
     AffineConstraints<double> &constraints) const
   {
@@ -415,6 +509,8 @@ namespace ContactDynamics
     // that a body that crosses several elements in one step is still found.
     // Points move linearly within the step in this picture, and a node that
     // passes through a face then lies in both boxes at the crossing.
+    if (pair.obstacle)
+      return obstacle_candidates(pair, u, margin_factor);
     std::vector<BoundingBox<dim>> secondary, primary;
     std::vector<unsigned int>     handled;
     for (unsigned int p = 0; p < n_patches(pair); ++p)
@@ -439,6 +535,35 @@ namespace ContactDynamics
     std::vector<std::vector<unsigned int>> result(n_patches(pair));
     for (unsigned int k = 0; k < handled.size(); ++k)
       result[handled[k]] = found[k];
+    return result;
+  }
+
+  template <int dim>
+  std::vector<std::vector<unsigned int>>
+  SurfaceContact<dim>::obstacle_candidates(const PairData   &pair,
+                                           const VectorType &u,
+                                           const double margin_factor) const
+  {
+    // {0} for a patch whose swept box comes within its margin of the
+    // obstacle at either time (the signed distance changes by at most the
+    // distance between two points)
+    std::vector<std::vector<unsigned int>> result(n_patches(pair));
+    for (unsigned int p = 0; p < n_patches(pair); ++p)
+      if (pair.handled_patch[p] || pair.assembled_patch[p])
+        {
+          double           size = 0, committed_size = 0;
+          BoundingBox<dim> box = patch_box(pair, p, u, size);
+          box.merge_with(patch_box(pair, p, committed_u, committed_size));
+          box.extend(margin_factor * std::max(size, committed_size));
+          const auto     corners = box.get_boundary_points();
+          const double   reach   = corners.first.distance(corners.second) / 2;
+          Tensor<1, dim> normal;
+          for (const auto *place : {&pair.committed_place, &pair.trial_place})
+            if (pair.obstacle->signed_distance(*place,
+                                               Tensor<1, dim>(box.center()),
+                                               normal) <= reach)
+              result[p] = {0};
+        }
     return result;
   }
 
@@ -489,7 +614,9 @@ namespace ContactDynamics
         for (unsigned int p = 0; p < n_patches(pair); ++p)
           if (pair.handled_patch[p] || pair.assembled_patch[p])
             {
-              const auto unknowns = patch_unknowns(pair, p, pair.pattern[p]);
+              const auto unknowns = pair.obstacle ?
+                                      obstacle_patch_unknowns(pair, p) :
+                                      patch_unknowns(pair, p, pair.pattern[p]);
               if (pair.assembled_patch[p])
                 for (const auto row : unknowns)
                   for (const auto col : unknowns)
@@ -810,6 +937,8 @@ namespace ContactDynamics
     n_stick = n_slip = 0;
     n_active         = 0;
     std::fill(std::begin(total_force), std::end(total_force), 0.);
+    for (auto &pair : pairs)
+      pair.reaction = {};
     const LinearSystem system{constraints,
                               with_jacobian,
                               residual,
@@ -856,7 +985,13 @@ namespace ContactDynamics
       if (pair.assembled_patch[p])
         {
           PatchForces forces;
-          assemble_patch(pair, p, state, forces);
+          if (!pair.obstacle)
+            assemble_patch(pair, p, state, forces);
+          else if (!pair.candidates[p].empty())
+            {
+              assemble_obstacle_patch(pair, p, state, forces);
+              add_reaction(pair, forces, state.u);
+            }
           add_forces(forces, system);
         }
   }
@@ -948,11 +1083,32 @@ namespace ContactDynamics
                                  std::end(total_force));
         sums.insert(sums.end(),
                     {double(n_active), double(n_stick), double(n_slip)});
+        for (auto &pair : pairs)
+          if (pair.obstacle)
+            {
+              auto &r = pair.reaction;
+              for (auto *t : {&r.force, &r.friction_force})
+                sums.insert(sums.end(), t->begin_raw(), t->end_raw());
+              for (auto *t : {&r.torque, &r.friction_torque})
+                sums.insert(sums.end(), t->begin_raw(), t->end_raw());
+            }
         Utilities::MPI::sum(sums, comm, sums);
         std::copy(sums.begin(), sums.begin() + dim, std::begin(total_force));
         n_active = std::lround(sums[dim]);
         n_stick  = std::lround(sums[dim + 1]);
         n_slip   = std::lround(sums[dim + 2]);
+        auto x   = sums.begin() + dim + 3;
+        for (auto &pair : pairs)
+          if (pair.obstacle)
+            {
+              auto &r = pair.reaction;
+              for (auto *t : {&r.force, &r.friction_force})
+                for (unsigned int d = 0; d < dim; ++d)
+                  (*t)[d] = *x++;
+              for (auto *t : {&r.torque, &r.friction_torque})
+                for (unsigned int d = 0; d < 3; ++d)
+                  (*t)[d] = *x++;
+            }
         gather_node_states();
       }
   }
@@ -1007,7 +1163,28 @@ namespace ContactDynamics
   {
     work.commit(u, old_u);
     committed_u = u; // for the swept search of the next step
-    gap_field   = 0;
+    // the obstacles' work on the bodies: minus the power of the reaction
+    // on the obstacle's rigid motion, trapezoidal in time
+    for (auto &pair : pairs)
+      if (pair.obstacle)
+        {
+          const auto power =
+            [](const auto &place, const auto &force, const auto &torque) {
+              return place.velocity * force + place.angular_velocity * torque;
+            };
+          const double dt = trial_time - committed_time;
+          const auto  &r0 = pair.committed_reaction, &r1 = pair.reaction;
+          const auto  &p0 = pair.committed_place, &p1 = pair.trial_place;
+          obstacle_work_done -=
+            dt / 2 *
+            (power(p0, r0.force, r0.torque) + power(p1, r1.force, r1.torque));
+          obstacle_friction_work -=
+            dt / 2 *
+            (power(p0, r0.friction_force, r0.friction_torque) +
+             power(p1, r1.friction_force, r1.friction_torque));
+          pair.committed_reaction = pair.reaction;
+        }
+    gap_field = 0;
     for (auto &field : slip_field)
       field = 0;
     for (auto &pair : pairs)
@@ -1083,8 +1260,11 @@ namespace ContactDynamics
             // it faces: deeper, the mesh no longer resolves the contact (a
             // node may pass a thin body and leave the search's reach)
             double element_depth = 1e300;
-            for (const unsigned int e : faces[j])
-              element_depth = std::min(element_depth, f.depth[e]);
+            if (pair.obstacle)
+              element_depth = pair.obstacle->depth();
+            else
+              for (const unsigned int e : faces[j])
+                element_depth = std::min(element_depth, f.depth[e]);
             const double own_depth =
               std::max(complementarity.capture_tolerance,
                        node.persistent ?
@@ -1106,7 +1286,8 @@ namespace ContactDynamics
             // (a node held in this step enforces its gap rate: it may end
             // inactive behind a face while it separates, within the depth
             // above)
-            if (node.active || node.persistent)
+            // (a node behind an obstacle is projected: its gap says so)
+            if (node.active || node.persistent || pair.obstacle)
               continue;
             if constexpr (dim == 3)
               {
@@ -1176,6 +1357,19 @@ namespace ContactDynamics
       for (const char *c :
            {"stick_nodes", "slip_nodes", "frictional_dissipation"})
         columns.emplace_back(c);
+    // per obstacle: the reaction on it and the work it did on the bodies
+    for (const auto &obstacle : contact.obstacles)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          columns.emplace_back(obstacle.name + "_force_" + "xyz"[d]);
+        if (dim == 2)
+          columns.emplace_back(obstacle.name + "_torque");
+        else
+          for (unsigned int d = 0; d < 3; ++d)
+            columns.emplace_back(obstacle.name + "_torque_" + "xyz"[d]);
+      }
+    if (!contact.obstacles.empty())
+      columns.emplace_back("obstacle_work");
     return columns;
   }
 
@@ -1188,8 +1382,26 @@ namespace ContactDynamics
     values.push_back(work.work());
     if (friction)
       for (const double v :
-           {double(n_stick), double(n_slip), work.dissipation()})
+           {double(n_stick), double(n_slip), dissipated_energy()})
         values.push_back(v);
+    for (unsigned int k = 0; k < contact.obstacles.size(); ++k)
+      {
+        Tensor<1, dim> force;
+        Tensor<1, 3>   torque;
+        for (unsigned int p = 0; p < pairs.size(); ++p)
+          if (contact.pairs[p].obstacle == int(k))
+            {
+              force += pairs[p].reaction.force;
+              torque += pairs[p].reaction.torque;
+            }
+        values.insert(values.end(), force.begin_raw(), force.end_raw());
+        if (dim == 2)
+          values.push_back(torque[2]);
+        else
+          values.insert(values.end(), torque.begin_raw(), torque.end_raw());
+      }
+    if (!contact.obstacles.empty())
+      values.push_back(obstacle_work_done);
     return values;
   }
 

@@ -13,6 +13,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <contact_dynamics/contact/rigid_obstacle.h>
 #include <contact_dynamics/mechanics/time_integrator.h>
 #include <contact_dynamics/scenes/scene_layout.h>
 #include <contact_dynamics/solvers/multiplier_condensation.h>
@@ -35,6 +36,9 @@ namespace ContactDynamics
     std::vector<types::boundary_id> primary;
     std::string                     name; // "secondary: primary" as written
     double                          friction_coefficient = 0;
+    // the index of the rigid obstacle that is the primary side (`primary`
+    // is empty then), or -1
+    int obstacle = -1;
   };
 
   struct ContactParameters
@@ -49,13 +53,16 @@ namespace ContactDynamics
     std::vector<ContactPair> pairs;
     // 'x, y' or 'x, y, z' (create_contact_formulation() checks the count)
     std::vector<std::vector<double>> monitored_points;
-    bool                     allow_initial_penetration = false;
-    std::vector<std::string> body_names; // of the scene, for messages
+    bool                             allow_initial_penetration = false;
+    std::vector<std::string>         body_names; // of the scene, for messages
+    std::vector<RigidObstacleParameters> obstacles;
 
     static void
     declare_parameters(ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm, const SceneLayout &layout);
+    parse_parameters(ParameterHandler  &prm,
+                     const SceneLayout &layout,
+                     const unsigned int dim);
   };
 
   /** What the time integrator tells a formulation about the trial state. */
@@ -183,6 +190,18 @@ namespace ContactDynamics
     multiplier_dofs() const = 0;
 
     /**
+     * The times of the last committed step and of the trial state, before
+     * the candidates of a step are searched: rigid obstacles move with
+     * time.
+     */
+    virtual void
+    set_times(const double committed, const double trial)
+    {
+      (void)committed;
+      (void)trial;
+    }
+
+    /**
      * An attempt at a step starts (again, after a failed one): state that
      * the iterations of an attempt carry goes back to the committed one.
      */
@@ -269,6 +288,13 @@ namespace ContactDynamics
     add_velocity_update_work(const double)
     {}
 
+    /** Work done on the bodies by prescribed (rigid) obstacles so far. */
+    virtual double
+    obstacle_work() const
+    {
+      return 0;
+    }
+
     /** Energy dissipated by the contact so far (friction). */
     virtual double
     dissipated_energy() const
@@ -316,9 +342,25 @@ namespace ContactDynamics
     const double              capture_tolerance,
     const Triangulation<dim> &triangulation);
 
-  /** Declares the `Contact` subsection with every formulation's entries. */
+  /**
+   * Declares `Contact/Rigid obstacles` only: the first reading of a file
+   * learns the obstacles' names from it, to declare their subsections.
+   */
   void
-  declare_contact_parameters(ParameterHandler &prm);
+  declare_obstacle_names(ParameterHandler &prm);
+
+  /** The names in `Contact/Rigid obstacles` (checked). */
+  std::vector<std::string>
+  obstacle_names(ParameterHandler &prm);
+
+  /**
+   * Declares the `Contact` subsection with every formulation's entries and
+   * a subsection per rigid obstacle of `layout`.
+   */
+  void
+  declare_contact_parameters(ParameterHandler  &prm,
+                             const SceneLayout &layout,
+                             const unsigned int dim);
 } // namespace ContactDynamics
 
 #endif

@@ -83,6 +83,13 @@ namespace ContactDynamics
                    const TrialState  &state,
                    PatchForces       &forces) override;
 
+    /** Against a rigid obstacle: source/contact/obstacle_patches.cc. */
+    void
+    assemble_obstacle_patch(PairData          &pair,
+                            const unsigned int patch,
+                            const TrialState  &state,
+                            PatchForces       &forces) override;
+
   private:
     /** assemble_patch() with the AD number type AD for `unknowns`. */
     template <typename AD>

@@ -1,8 +1,8 @@
 // Node-to-segment contact (2-D, and 3-D in node_to_segment_contact_3d.cc):
-// every secondary node is projected onto the closest primary face; the pointwise gap along the (optionally smoothed)
-// primary normal is enforced kinematically with a nodal Lagrange multiplier
-// and the same complementarity function as the mortar formulation; see
-// doc/contact.md.
+// every secondary node is projected onto the closest primary face; the
+// pointwise gap along the (optionally smoothed) primary normal is enforced
+// kinematically with a nodal Lagrange multiplier and the same complementarity
+// function as the mortar formulation; see doc/contact.md.
 #ifndef contact_dynamics_contact_node_to_segment_contact_h
 #define contact_dynamics_contact_node_to_segment_contact_h
 
@@ -84,6 +84,13 @@ namespace ContactDynamics
                    const unsigned int patch,
                    const TrialState  &state,
                    PatchForces       &forces) override;
+
+    /** Against a rigid obstacle: source/contact/obstacle_patches.cc. */
+    void
+    assemble_obstacle_patch(PairData          &pair,
+                            const unsigned int patch,
+                            const TrialState  &state,
+                            PatchForces       &forces) override;
 
   private:
     /**

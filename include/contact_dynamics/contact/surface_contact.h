@@ -16,6 +16,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -135,6 +136,17 @@ namespace ContactDynamics
     void
     commit_step(const VectorType &u, const VectorType &old_u) override;
 
+    /** Places the rigid obstacles at the committed and the trial time. */
+    void
+    set_times(const double committed, const double trial) override;
+
+    /** The work the rigid obstacles did on the bodies so far. */
+    double
+    obstacle_work() const override
+    {
+      return obstacle_work_done;
+    }
+
     /**
      * Rejects a step in which a secondary node went through a primary face
      * unnoticed: see doc/contact.md, "Search" for the rule.
@@ -171,10 +183,15 @@ namespace ContactDynamics
       work.add_impulse_work(work_done);
     }
 
+    /**
+     * Friction on both sides: a rigid obstacle's share (its friction
+     * force on its moving surface) is not in the contact work of the
+     * meshed surfaces.
+     */
     double
     dissipated_energy() const override
     {
-      return work.dissipation();
+      return work.dissipation() + obstacle_friction_work;
     }
 
     void
@@ -252,6 +269,23 @@ namespace ContactDynamics
       std::vector<unsigned int> node_owner;
       // secondary nodes at the last committed step
       std::vector<Point<dim>> position;
+      // a rigid obstacle as the primary side (`primary` is empty then), at
+      // the committed and the trial time; per secondary node the axis its
+      // tangents are built from (3-D, tangent_basis())
+      std::shared_ptr<const RigidObstacle<dim>> obstacle;
+      typename RigidObstacle<dim>::Placement    committed_place, trial_place;
+      std::vector<unsigned int>                 tangent_axis;
+      std::map<types::global_dof_index, std::pair<unsigned int, unsigned int>>
+        dof_node; // displacement dof -> (node, component)
+      // on the obstacle at the trial state and at the last committed step:
+      // force, torque about its center (3 components; z only in 2-D) and
+      // their friction parts
+      struct Reaction
+      {
+        Tensor<1, dim> force, friction_force;
+        Tensor<1, 3>   torque, friction_torque;
+      };
+      Reaction reaction, committed_reaction;
     };
 
     /**
@@ -381,6 +415,26 @@ namespace ContactDynamics
                    const TrialState  &state,
                    PatchForces       &forces) = 0;
 
+    /**
+     * assemble_patch() for a pair whose primary side is a rigid obstacle
+     * (pair.obstacle, at pair.trial_place), with the unknowns of
+     * obstacle_patch_unknowns().
+     */
+    virtual void
+    assemble_obstacle_patch(PairData          &pair,
+                            const unsigned int patch,
+                            const TrialState  &state,
+                            PatchForces       &forces) = 0;
+
+    /**
+     * The unknowns of a patch against a rigid obstacle: the displacements
+     * of patch_nodes() node by node, then their multipliers component by
+     * component (normal, then the tangential ones).
+     */
+    std::vector<types::global_dof_index>
+    obstacle_patch_unknowns(const PairData    &pair,
+                            const unsigned int patch) const;
+
     ContactParameters         contact;
     ComplementarityParameters complementarity;
     std::vector<PairData>     pairs;
@@ -462,6 +516,17 @@ namespace ContactDynamics
                        const VectorType &u,
                        const double      margin_factor) const;
 
+    /** compute_candidates() for a rigid obstacle: {0} or nothing. */
+    std::vector<std::vector<unsigned int>>
+    obstacle_candidates(const PairData   &pair,
+                        const VectorType &u,
+                        const double      margin_factor) const;
+
+    /** The obstacle of a pair, its placements and node maps. */
+    void
+    set_up_obstacle(PairData                      &pair,
+                    const RigidObstacleParameters &parameters) const;
+
     /** Makes the node states of all processes' nodes known everywhere. */
     void
     gather_node_states();
@@ -479,6 +544,16 @@ namespace ContactDynamics
 
     std::vector<types::global_dof_index> normal_multiplier_dofs;
     std::vector<types::global_dof_index> other_multiplier_dofs;
+
+    double committed_time = 0, trial_time = 0;
+    // the work of the obstacles on the bodies, and its friction part
+    double obstacle_work_done = 0, obstacle_friction_work = 0;
+
+    /** Adds a patch's forces to the reaction on the pair's obstacle. */
+    void
+    add_reaction(PairData          &pair,
+                 const PatchForces &forces,
+                 const VectorType  &u) const;
 
     ContactWork  work;
     bool         friction = false;

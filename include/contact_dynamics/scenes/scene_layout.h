@@ -25,6 +25,8 @@ namespace ContactDynamics
     // The body (material id) of each surface where the scene knows it
     // without the mesh (the built-in scenes); empty for a Gmsh scene.
     std::map<std::string, types::material_id> surface_body;
+    // The rigid obstacles of 'Contact/Rigid obstacles' (no mesh).
+    std::vector<std::string> obstacle_names;
 
     /** Material id of a body; throws a message listing the known bodies. */
     types::material_id

@@ -1,0 +1,131 @@
+// Hertz contact of a rigid cylinder (an obstacle with no mesh and no
+// unknowns, R = 1) pressed into an elastic block (E = 1000, nu = 0.3,
+// plane strain, clamped at its base), frictionless and quasi-static: the
+// cylinder starts 1e-4 above the block (the dual weighted gap of a convex
+// surface that touches a node is -h^2/12 there, below zero: a start at
+// contact would count as an overlap) and indents it by 0.01 in two steps.
+// Reference: Hertz's solution of a rigid cylinder on a half-space for the load
+// P per unit length that the run reports on the obstacle (analytic): E* = E /
+// (1 - nu^2), a = sqrt(4 P R / (pi E*)), p0 = 2 P / (pi a). The block [-0.5,
+// 0.5] x
+// [-1, 0] (80 x 80 elements, h = 0.0125) is a finite body: on a block half
+// as deep the half-width fell 2 % short of Hertz's. The half-width is
+// measured from the second moment of the nodal pressures (a^2 = 4 int p x^2
+// / int p for the Hertz profile), with the weights integral N_j of the
+// current surface. Asserted, for mortar and node-to-segment:
+// - the half-width and the peak pressure within 2.5 % of Hertz's (measured
+//   -0.75 % and +1.3 %; a 10 % error in the pressures fails);
+// - the load on the cylinder equals the integral of the nodal pressures
+//   (equilibrium, 0.5 %; measured 0.07 %).
+#include <contact_dynamics/contact/surface_contact.h>
+#include <contact_dynamics/simulator.h>
+
+#include "tests.h"
+
+#include <cmath>
+
+using namespace dealii;
+
+namespace
+{
+  void
+  run(const std::string &formulation)
+  {
+    ParameterHandler prm;
+    read_test_parameters("rigid_hertz.prm",
+                         R"(
+subsection Scene
+  set Scene = block
+  subsection Block
+    set Origin       = -0.5, -1
+    set Size         = 1, 1
+    set Subdivisions = 80, 80
+  end
+end
+subsection Body body
+  set Young's modulus = 1000
+  set Poisson's ratio = 0.3
+end
+subsection Boundary conditions
+  set Dirichlet = bottom: xy: 0
+end
+subsection Time integration
+  set Scheme    = quasi-static
+  set Time step = 0.5
+  set End time  = 1
+end
+subsection Contact
+  set Formulation     = )" +
+                           formulation + R"(
+  set Rigid obstacles = roller
+  set Pairs           = top: roller
+  subsection Rigid obstacle roller
+    set Shape       = cylinder
+    set Point       = 0, 1.0001
+    set Radius      = 1
+    set Translation = 0; -0.0101*t
+  end
+end
+subsection Output
+  set Output directory = output_rigid_hertz
+  set VTU interval     = 0
+end
+)",
+                         prm);
+    std::ostringstream            screen;
+    ContactDynamics::Simulator<2> simulator(prm, screen);
+    simulator.initialize();
+    while (simulator.current_time() < 1 - 1e-9)
+      if (!simulator.advance(0.5))
+        check_true(formulation + ": step converged", false);
+
+    const auto *contact =
+      dynamic_cast<const ContactDynamics::SurfaceContact<2> *>(
+        simulator.get_contact());
+    const auto nodes   = contact->secondary_nodes(0);
+    const auto surface = contact->secondary_surface(0);
+    // integral N_j on the current surface: half of each adjacent face
+    std::vector<double> weight(nodes.states.size(), 0.);
+    for (const auto &face : surface.faces)
+      {
+        const double half =
+          nodes.position[face[0]].distance(nodes.position[face[1]]) / 2;
+        weight[face[0]] += half;
+        weight[face[1]] += half;
+      }
+    double force = 0, moment = 0, peak = 0;
+    for (unsigned int j = 0; j < nodes.states.size(); ++j)
+      {
+        const double p = nodes.states[j].pressure;
+        const double x = nodes.position[j][0];
+        force += p * weight[j];
+        moment += p * x * x * weight[j];
+        peak = std::max(peak, p);
+      }
+    const double P = contact_statistics(*contact).at("roller_force_y");
+    const double R = 1, E_star = 1000 / (1 - 0.3 * 0.3);
+    const double a    = std::sqrt(4 * P * R / (numbers::PI * E_star));
+    const double p0   = 2 * P / (numbers::PI * a);
+    const double a_fe = std::sqrt(4 * moment / force);
+    check_range(formulation + ": half-width / Hertz - 1",
+                a_fe / a - 1,
+                -0.025,
+                0.025);
+    check_range(formulation + ": peak pressure / Hertz - 1",
+                peak / p0 - 1,
+                -0.025,
+                0.025);
+    check_range(formulation + ": integral of the pressures / load - 1",
+                force / P - 1,
+                -0.005,
+                0.005);
+  }
+} // namespace
+
+int
+main()
+{
+  initlog();
+  run("mortar");
+  run("nts");
+}
