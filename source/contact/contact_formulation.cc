@@ -156,26 +156,39 @@ namespace ContactDynamics
                                  "primary side, alone."));
         pair.secondary = side(entry.substr(0, colon), entry);
         pair.obstacle  = obstacle_index(entry.substr(colon + 1));
-        if (pair.obstacle >= 0)
+        if (pair.obstacle < 0)
           {
-            // an obstacle touches any body: no further checks
-            pairs.push_back(pair);
-            continue;
+            for (const auto &name :
+                 Utilities::split_string_list(entry.substr(colon + 1), '+'))
+              AssertThrow(obstacle_index(name) < 0,
+                          ExcMessage("In 'Contact/Pairs', the entry '" + entry +
+                                     "' joins the rigid obstacle '" + name +
+                                     "' with other surfaces: an obstacle is "
+                                     "a primary side alone."));
+            pair.primary = side(entry.substr(colon + 1), entry);
           }
-        for (const auto &name :
-             Utilities::split_string_list(entry.substr(colon + 1), '+'))
-          AssertThrow(obstacle_index(name) < 0,
-                      ExcMessage("In 'Contact/Pairs', the entry '" + entry +
-                                 "' joins the rigid obstacle '" + name +
-                                 "' with other surfaces: an obstacle is a "
-                                 "primary side alone."));
-        pair.primary = side(entry.substr(colon + 1), entry);
         for (const auto *ids : {&pair.secondary, &pair.primary})
           for (auto id = ids->begin(); id != ids->end(); ++id)
             AssertThrow(std::find(id + 1, ids->end(), *id) == ids->end(),
                         ExcMessage("In 'Contact/Pairs', the entry '" + entry +
                                    "' names the surface '" + surface_name[*id] +
                                    "' twice on one side."));
+        if (pair.obstacle >= 0)
+          {
+            // an obstacle touches any body; a surface meets it once
+            for (const ContactPair &other : pairs)
+              if (other.obstacle == pair.obstacle)
+                if (const auto id = common(pair.secondary, other.secondary))
+                  AssertThrow(false,
+                              ExcMessage("In 'Contact/Pairs', the entries '" +
+                                         other.name + "' and '" + entry +
+                                         "' both pair the surface '" +
+                                         surface_name[*id] +
+                                         "' with the rigid obstacle: remove "
+                                         "one of them."));
+            pairs.push_back(pair);
+            continue;
+          }
         if (const auto id = common(pair.secondary, pair.primary))
           AssertThrow(false,
                       ExcMessage("In 'Contact/Pairs', the entry '" + entry +

@@ -185,7 +185,10 @@ namespace ContactDynamics
       return sums;
     }
 
-    /** Whether a face's outward normal turns away from the obstacle. */
+    /**
+     * Whether a face outside the obstacle turns its outward normal away
+     * from it (the back of a body).
+     */
     template <int dim, typename PairData>
     bool
     faces_away(const PairData                                    &pair,
@@ -202,11 +205,13 @@ namespace ContactDynamics
         }
       else
         outward = cross_product_3d(x[1] - x[0], x[2] - x[0]);
+      // (a face behind the surface still counts: a body that went inside
+      // is pushed out)
       Tensor<1, dim> normal;
-      pair.obstacle->signed_distance(pair.trial_place,
-                                     Tensor<1, dim>(center),
-                                     normal);
-      return outward * normal >= 0;
+      const double   phi = pair.obstacle->signed_distance(pair.trial_place,
+                                                        Tensor<1, dim>(center),
+                                                        normal);
+      return outward * normal >= 0 && phi > 0;
     }
   } // namespace
 
@@ -236,8 +241,11 @@ namespace ContactDynamics
       ContactAD::add_to(pair.gap[j], g, unknowns);
       pair.weight[j].value += 1.;
       const Vector<dim, AD> n_secondary = -normal;
-      const auto t = node_tangents<dim>(n_secondary, pair.tangent_axis[j]);
-      const bool friction = pair.friction_coefficient > 0;
+      const bool            friction    = pair.friction_coefficient > 0;
+      // (tangents only with friction: they need not exist otherwise)
+      std::array<Vector<dim, AD>, dim - 1> t;
+      if (friction)
+        t = node_tangents<dim>(n_secondary, pair.tangent_axis[j]);
       if ((this->complementarity.holds_contact() && state.dynamic) || friction)
         {
           const Vector<dim, AD> y = x - g * normal;
@@ -310,7 +318,7 @@ namespace ContactDynamics
         for (unsigned int a = 0; a < n; ++a)
           lambda_t[a][k] = variables.multiplier();
       std::array<std::array<Vector<dim, AD>, dim - 1>, n> t;
-      for (unsigned int a = 0; a < n; ++a)
+      for (unsigned int a = 0; a < n && friction; ++a)
         {
           Vector<dim, AD> normal;
           pair.obstacle->signed_distance(pair.trial_place, x[a], normal);
@@ -329,7 +337,8 @@ namespace ContactDynamics
           const unsigned int j = face[a];
           ContactAD::add_to(pair.gap[j], sums.gap[a], unknowns);
           ContactAD::add_to(pair.weight[j], sums.weight[a], unknowns);
-          ContactAD::add_to(pair.gap_rate[j], AD(-sums.gap_rate[a]), unknowns);
+          // (+: the rate of phi is (v - v_o).grad phi = -(v - v_o).n_s)
+          ContactAD::add_to(pair.gap_rate[j], sums.gap_rate[a], unknowns);
           for (unsigned int k = 0; k < dim - 1; ++k)
             ContactAD::add_to(pair.slip_rate[j][k],
                               sums.slip_rate[a][k],

@@ -217,26 +217,30 @@ namespace ContactDynamics
                                                           parameters.axis[d];
       }
     where.direction = where.rotation * direction;
-    // central differences: exact for motions quadratic in t
-    const double h = 1e-6 * std::max(1., std::abs(t));
+    // central differences (exact for motions quadratic in t); forward ones
+    // at the start, where a motion may not be defined before t = 0
+    const double h    = 1e-6 * std::max(1., std::abs(t));
+    const double t0   = t - h < 0 ? t : t - h;
+    const auto   rate = [&](const Function<1> &f) {
+      return (f.value(Point<1>(t + h)) - f.value(Point<1>(t0))) / (t + h - t0);
+    };
     for (unsigned int d = 0; d < dim; ++d)
-      where.velocity[d] = (translation[d]->value(Point<1>(t + h)) -
-                           translation[d]->value(Point<1>(t - h))) /
-                          (2 * h);
-    where.angular_velocity =
-      rotation_axis *
-      (angle->value(Point<1>(t + h)) - angle->value(Point<1>(t - h))) / (2 * h);
+      where.velocity[d] = rate(*translation[d]);
+    where.angular_velocity = rotation_axis * rate(*angle);
+    bool finite            = std::isfinite(where.angular_velocity.norm());
+    for (unsigned int d = 0; d < dim; ++d)
+      finite = finite && std::isfinite(where.center[d]) &&
+               std::isfinite(where.velocity[d]) &&
+               std::isfinite(where.direction[d]);
+    AssertThrow(finite,
+                ExcMessage(
+                  "The rigid obstacle '" + parameters.name +
+                  "' has no finite position or velocity at t = " +
+                  format_number(t) +
+                  ": its Translation and Rotation angle (Contact/" +
+                  RigidObstacleParameters::subsection_name(parameters.name) +
+                  ") must be finite functions of t over the run."));
     return where;
-  }
-
-  template <int dim>
-  Point<dim>
-  RigidObstacle<dim>::move(const Placement  &from,
-                           const Placement  &to,
-                           const Point<dim> &y) const
-  {
-    return to.center +
-           to.rotation * (transpose(from.rotation) * (y - from.center));
   }
 
   template class RigidObstacle<2>;

@@ -585,7 +585,13 @@ namespace ContactDynamics
     for (auto &pair : pairs)
       {
         pair.candidates = compute_candidates(pair, u, 0.5);
-        bool covered    = !pair.pattern.empty();
+        if (pair.obstacle && pair.pattern.empty())
+          {
+            // every patch may meet the obstacle: one pattern for the run
+            pair.pattern.assign(n_patches(pair), {0});
+            rebuild = true;
+          }
+        bool covered = !pair.pattern.empty();
         for (unsigned int e = 0; covered && e < pair.candidates.size(); ++e)
           covered = std::includes(pair.pattern[e].begin(),
                                   pair.pattern[e].end(),
@@ -1165,6 +1171,7 @@ namespace ContactDynamics
     committed_u = u; // for the swept search of the next step
     // the obstacles' work on the bodies: minus the power of the reaction
     // on the obstacle's rigid motion, trapezoidal in time
+    obstacle_normal_step_work = 0;
     for (auto &pair : pairs)
       if (pair.obstacle)
         {
@@ -1175,13 +1182,16 @@ namespace ContactDynamics
           const double dt = trial_time - committed_time;
           const auto  &r0 = pair.committed_reaction, &r1 = pair.reaction;
           const auto  &p0 = pair.committed_place, &p1 = pair.trial_place;
-          obstacle_work_done -=
-            dt / 2 *
+          const double step_work =
+            -dt / 2 *
             (power(p0, r0.force, r0.torque) + power(p1, r1.force, r1.torque));
-          obstacle_friction_work -=
-            dt / 2 *
+          const double step_friction_work =
+            -dt / 2 *
             (power(p0, r0.friction_force, r0.friction_torque) +
              power(p1, r1.friction_force, r1.friction_torque));
+          obstacle_work_done += step_work;
+          obstacle_friction_work += step_friction_work;
+          obstacle_normal_step_work += step_work - step_friction_work;
           pair.committed_reaction = pair.reaction;
         }
     gap_field = 0;
@@ -1261,7 +1271,12 @@ namespace ContactDynamics
             // node may pass a thin body and leave the search's reach)
             double element_depth = 1e300;
             if (pair.obstacle)
-              element_depth = pair.obstacle->depth();
+              {
+                // the obstacle's size, at most the secondary elements'
+                element_depth = pair.obstacle->depth();
+                for (const unsigned int e : s.node_faces[j])
+                  element_depth = std::min(element_depth, s.depth[e]);
+              }
             else
               for (const unsigned int e : faces[j])
                 element_depth = std::min(element_depth, f.depth[e]);

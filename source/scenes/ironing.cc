@@ -15,25 +15,53 @@ namespace ContactDynamics
     {
     public:
       static void
-      declare_parameters(ParameterHandler &)
-      {}
+      declare_parameters(ParameterHandler &prm)
+      {
+        prm.enter_subsection("Ironing");
+        prm.declare_entry(
+          "Tool",
+          "elastic",
+          Patterns::Selection("elastic|none"),
+          "'elastic': the meshed tool (a body 'tool'); 'none': the substrate "
+          "only, for a rigid obstacle in its place (Contact/Rigid "
+          "obstacles: in 2-D a cylinder of radius 1 with Point 1.2, 5.02; "
+          "in 3-D a sphere of radius 1 with Point 1.2, 2.52, 0), which has "
+          "no unknowns.");
+        prm.leave_subsection();
+      }
 
     protected:
+      void
+      parse_scene_parameters(ParameterHandler &prm) override
+      {
+        prm.enter_subsection("Ironing");
+        with_tool = prm.get("Tool") == "elastic";
+        prm.leave_subsection();
+      }
+
       std::vector<BodyDefinition<dim>>
       bodies() const override
       {
+        std::vector<BodyDefinition<dim>> all;
         if constexpr (dim == 2)
-          return bodies_2d();
+          all = bodies_2d();
         else
-          return bodies_3d();
+          all = bodies_3d();
+        if (!with_tool)
+          all.erase(all.begin());
+        return all;
       }
 
     private:
+      bool with_tool = true;
+
       std::vector<BodyDefinition<2>>
       bodies_2d() const
       {
         using namespace MeshSteps;
-        const auto scaled = [this](const double n) { return this->scaled(n); };
+        const auto scaled = [this](const double n) {
+          return this->scaled(n);
+        };
         // 200 elements along the top; vertically a geometric progression
         // from the top element length down to coarser cells.
         const unsigned int nx = scaled(200);

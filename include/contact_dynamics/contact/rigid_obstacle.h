@@ -80,7 +80,10 @@ namespace ContactDynamics
       return parameters.name;
     }
 
-    /** The placement at time t (velocities by central differences). */
+    /**
+     * The placement at time t (velocities by central differences); throws
+     * if it is not finite.
+     */
     Placement
     placement(const double t) const;
 
@@ -136,13 +139,9 @@ namespace ContactDynamics
       return v;
     }
 
-    /** Where the obstacle's material point at y (placement `from`) goes. */
-    Point<dim>
-    move(const Placement &from, const Placement &to, const Point<dim> &y) const;
-
     /**
-     * How deep a held node may sink before the step is rejected: the
-     * radius, or for a plane unlimited.
+     * The obstacle's own bound on the depth a held node may sink before
+     * the step is rejected: the radius, or for a plane none.
      */
     double
     depth() const

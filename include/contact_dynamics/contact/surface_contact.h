@@ -163,8 +163,9 @@ namespace ContactDynamics
     double
     velocity_update_request() const override
     {
+      // (not the normal work of a moving obstacle: that is external work)
       return complementarity.stabilization == Stabilization::velocity_update ?
-               work.normal_step_work() :
+               work.normal_step_work() - obstacle_normal_step_work :
                0.;
     }
 
@@ -548,6 +549,7 @@ namespace ContactDynamics
     double committed_time = 0, trial_time = 0;
     // the work of the obstacles on the bodies, and its friction part
     double obstacle_work_done = 0, obstacle_friction_work = 0;
+    double obstacle_normal_step_work = 0; // of the last committed step
 
     /** Adds a patch's forces to the reaction on the pair's obstacle. */
     void
