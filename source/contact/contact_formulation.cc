@@ -37,10 +37,10 @@ namespace ContactDynamics
                       "'none': the bodies do not interact (no multiplier "
                       "unknowns, no cost). 'mortar': dual mortar "
                       "segment-to-segment contact with Lagrange multipliers "
-                      "on the secondary surfaces (2-D). 'nts': "
+                      "on the secondary surfaces (2-D and 3-D). 'nts': "
                       "node-to-segment contact, each secondary node "
                       "projected onto the primary surface, enforced with "
-                      "nodal multipliers (2-D).");
+                      "nodal multipliers (2-D and 3-D).");
     prm.declare_entry(
       "Pairs",
       "",
