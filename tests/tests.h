@@ -102,23 +102,33 @@ check_range(const std::string &name,
 #include <string>
 #include <vector>
 
-// Mean x velocity (momentum / mass) of the Q1 body with material id `body`,
-// with row-sum (lumped) nodal masses, which give the momentum exactly
-// (uniform density and parallelogram cells).
+// Mean velocity component (momentum / mass) of the 2-D Q1 body with
+// material id `body`, with row-sum (lumped) nodal masses, which give the
+// momentum exactly (uniform density and parallelogram cells).
 template <typename Simulator>
 double
-mean_velocity_x(const Simulator &simulator, const unsigned int body)
+mean_velocity(const Simulator   &simulator,
+              const unsigned int body,
+              const unsigned int component)
 {
   double momentum = 0, mass = 0;
   for (const auto &cell : simulator.get_dof_handler().active_cell_iterators())
     if (cell->material_id() == body)
       for (unsigned int v = 0; v < 4; ++v)
         {
-          momentum += cell->measure() / 4 *
-                      simulator.velocity()(cell->vertex_dof_index(v, 0));
+          momentum +=
+            cell->measure() / 4 *
+            simulator.velocity()(cell->vertex_dof_index(v, component));
           mass += cell->measure() / 4;
         }
   return momentum / mass;
+}
+
+template <typename Simulator>
+double
+mean_velocity_x(const Simulator &simulator, const unsigned int body)
+{
+  return mean_velocity(simulator, body, 0);
 }
 
 // The columns of a CSV file (a header line of names, then numbers) by name:

@@ -516,11 +516,7 @@ namespace ContactDynamics
     for (unsigned int p = 0; p < n_patches(pair); ++p)
       if (pair.handled_patch[p] || pair.assembled_patch[p])
         {
-          double           size = 0, committed_size = 0;
-          BoundingBox<dim> box = patch_box(pair, p, u, size);
-          box.merge_with(patch_box(pair, p, committed_u, committed_size));
-          box.extend(margin_factor * std::max(size, committed_size));
-          secondary.push_back(box);
+          secondary.push_back(swept_patch_box(pair, p, u, margin_factor));
           handled.push_back(p);
         }
     for (unsigned int f = 0; f < pair.primary.n_faces(); ++f)
@@ -539,6 +535,20 @@ namespace ContactDynamics
   }
 
   template <int dim>
+  BoundingBox<dim>
+  SurfaceContact<dim>::swept_patch_box(const PairData    &pair,
+                                       const unsigned int patch,
+                                       const VectorType  &u,
+                                       const double       margin_factor) const
+  {
+    double           size = 0, committed_size = 0;
+    BoundingBox<dim> box = patch_box(pair, patch, u, size);
+    box.merge_with(patch_box(pair, patch, committed_u, committed_size));
+    box.extend(margin_factor * std::max(size, committed_size));
+    return box;
+  }
+
+  template <int dim>
   std::vector<std::vector<unsigned int>>
   SurfaceContact<dim>::obstacle_candidates(const PairData   &pair,
                                            const VectorType &u,
@@ -551,10 +561,8 @@ namespace ContactDynamics
     for (unsigned int p = 0; p < n_patches(pair); ++p)
       if (pair.handled_patch[p] || pair.assembled_patch[p])
         {
-          double           size = 0, committed_size = 0;
-          BoundingBox<dim> box = patch_box(pair, p, u, size);
-          box.merge_with(patch_box(pair, p, committed_u, committed_size));
-          box.extend(margin_factor * std::max(size, committed_size));
+          const BoundingBox<dim> box =
+            swept_patch_box(pair, p, u, margin_factor);
           const auto     corners = box.get_boundary_points();
           const double   reach   = corners.first.distance(corners.second) / 2;
           Tensor<1, dim> normal;

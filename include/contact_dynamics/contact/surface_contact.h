@@ -517,6 +517,16 @@ namespace ContactDynamics
                        const VectorType &u,
                        const double      margin_factor) const;
 
+    /**
+     * The box of a patch at the committed and the trial configuration u,
+     * enlarged by margin_factor times the patch's size.
+     */
+    BoundingBox<dim>
+    swept_patch_box(const PairData    &pair,
+                    const unsigned int patch,
+                    const VectorType  &u,
+                    const double       margin_factor) const;
+
     /** compute_candidates() for a rigid obstacle: {0} or nothing. */
     std::vector<std::vector<unsigned int>>
     obstacle_candidates(const PairData   &pair,
