@@ -38,7 +38,7 @@ namespace
   {
     // smoothing < 0: mortar; else node-to-segment with that smoothing
     // distance (the same complementarity parameters)
-    const bool        nts       = smoothing >= 0;
+    const bool        nts         = smoothing >= 0;
     const std::string formulation = nts ? "Node to segment" : "Mortar";
     // dynamic: the upper block hits the lower one from a small gap, so
     // that the nodes the first step brings into contact hold their gaps
@@ -88,7 +88,11 @@ subsection Contact
     set Stabilization = persistency
     set Jacobian = )" +
            jacobian + R"(
-)" + (nts ? "    set Normal smoothing distance = " + std::to_string(smoothing) + "\n" : "") + R"(  end
+)" +
+           (nts ? "    set Normal smoothing distance = " +
+                    std::to_string(smoothing) + "\n" :
+                  "") +
+           R"(  end
 end
 subsection Output
   set Output directory = output_jacobian_3d
@@ -145,8 +149,8 @@ end
     constraints.set_zero(direction);
 
     // (round-off dominates the differences below: 1e-7 gives 1e-6)
-    VectorType   r(trial);
-    const auto   errors   = contact_row_errors(simulator,
+    VectorType r(trial);
+    const auto errors = contact_row_errors(simulator,
                                            trial,
                                            direction,
                                            mask,
@@ -154,13 +158,8 @@ end
                                            1e-6,
                                            0.01,
                                            r);
-    unsigned int n_active = 0, n_held = 0, n_stick = 0;
-    for (const auto &node : contact->node_states(0))
-      {
-        n_active += node.active;
-        n_held += node.active && node.persistent;
-        n_stick += node.stick;
-      }
+    const auto [n_active, n_held, n_stick] =
+      count_node_states(contact->node_states(0));
 
     deallog << name << ": multiplier rows " << errors.n_multiplier_rows
             << ", force rows " << errors.n_force_rows << ", active nodes "

@@ -149,8 +149,8 @@ end
         }
     simulator.get_constraints().set_zero(direction);
 
-    VectorType   r(trial);
-    const auto   errors   = contact_row_errors(simulator,
+    VectorType r(trial);
+    const auto errors = contact_row_errors(simulator,
                                            trial,
                                            direction,
                                            mask,
@@ -158,13 +158,8 @@ end
                                            1e-6,
                                            0.01,
                                            r);
-    unsigned int n_active = 0, n_held = 0, n_stick = 0;
-    for (const auto &node : contact->node_states(0))
-      {
-        n_active += node.active;
-        n_held += node.active && node.persistent;
-        n_stick += node.stick;
-      }
+    const auto [n_active, n_held, n_stick] =
+      count_node_states(contact->node_states(0));
     deallog << name << ": multiplier rows " << errors.n_multiplier_rows
             << ", force rows " << errors.n_force_rows << ", active nodes "
             << n_active << " of " << contact->node_states(0).size()

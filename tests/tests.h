@@ -94,6 +94,7 @@ check_range(const std::string &name,
 #include <contact_dynamics/contact/contact_formulation.h>
 #include <contact_dynamics/scenes/scene.h>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -129,6 +130,21 @@ double
 mean_velocity_x(const Simulator &simulator, const unsigned int body)
 {
   return mean_velocity(simulator, body, 0);
+}
+
+// Active, active and held (persistent), and sticking nodes among `states`.
+template <typename States>
+std::array<unsigned int, 3>
+count_node_states(const States &states)
+{
+  std::array<unsigned int, 3> n = {{0, 0, 0}};
+  for (const auto &node : states)
+    {
+      n[0] += node.active;
+      n[1] += node.active && node.persistent;
+      n[2] += node.stick;
+    }
+  return n;
 }
 
 // The columns of a CSV file (a header line of names, then numbers) by name:
