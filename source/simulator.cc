@@ -23,6 +23,7 @@
 #include <array>
 #include <cmath>
 #include <csignal>
+#include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria.h>
 #include <iomanip>
 #include <limits>
@@ -75,6 +76,10 @@ namespace ContactDynamics
     prm.enter_subsection("Parallel");
     ParallelParameters::declare_parameters(prm);
     prm.leave_subsection();
+
+    prm.enter_subsection("Mesh refinement");
+    RefinementParameters::declare_parameters(prm);
+    prm.leave_subsection();
   }
 
   template <int dim>
@@ -124,6 +129,14 @@ namespace ContactDynamics
     prm.enter_subsection("Parallel");
     parallel_parameters.parse_parameters(prm);
     prm.leave_subsection();
+
+    prm.enter_subsection("Mesh refinement");
+    refinement.parse_parameters(prm, dim);
+    prm.leave_subsection();
+    // p4est refines and repartitions in parallel
+    if (refinement.adapt_to_contact)
+      parallel_parameters.mesh = ParallelParameters::Mesh::distributed;
+    base_level = parallel_parameters.global_refinements;
 
     mechanics = std::make_unique<SolidMechanics<dim>>(dof_handler, bodies);
     if (parallel_parameters.mesh == ParallelParameters::Mesh::distributed)
@@ -207,7 +220,7 @@ namespace ContactDynamics
 
   template <int dim>
   void
-  Simulator<dim>::setup_system()
+  Simulator<dim>::setup_system(const bool first)
   {
     TimerOutput::Scope t(*timer, "setup");
     dof_handler.distribute_dofs(*fe);
@@ -215,15 +228,21 @@ namespace ContactDynamics
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant);
     if (contact)
       {
-        contact->setup(dof_handler);
+        if (first)
+          contact->setup(dof_handler);
+        else
+          contact->remesh(dof_handler);
         locally_relevant.add_indices(contact->surface_dofs());
         // the first process opens contact_history.csv
-        check_collectively(mpi_communicator, [&]() {
-          contact_writer =
-            std::make_unique<ContactWriter<dim>>(*contact,
-                                                 mpi_communicator,
-                                                 output_parameters.directory);
-        });
+        if (first)
+          check_collectively(mpi_communicator, [&]() {
+            contact_writer =
+              std::make_unique<ContactWriter<dim>>(*contact,
+                                                   mpi_communicator,
+                                                   output_parameters.directory);
+          });
+        else
+          contact_writer->locate_monitored_nodes(*contact);
       }
 
     {
@@ -280,10 +299,22 @@ namespace ContactDynamics
         IndexSet held = prescribed & contact->surface_dofs();
         prescribed.add_indices(union_over_processes(held, mpi_communicator));
       }
+    dirichlet_dofs = prescribed;
     for (const auto i : prescribed)
       increment_constraints.add_line(i);
     if (contact)
       contact->add_constraints(increment_constraints);
+    // hanging nodes of an adapted mesh (never on a 2-D contact surface);
+    // an unused multiplier stays held at zero
+    hanging_constraints.clear();
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging_constraints);
+    hanging_constraints.close();
+    for (const auto &line : hanging_constraints.get_lines())
+      if (!increment_constraints.is_constrained(line.index))
+        {
+          increment_constraints.add_line(line.index);
+          increment_constraints.add_entries(line.index, line.entries);
+        }
     increment_constraints.close();
     mechanics->setup(increment_constraints);
 
@@ -302,7 +333,7 @@ namespace ContactDynamics
     for (VectorType *vec : {&u_ghost, &v_ghost})
       vec->reinit(locally_owned, locally_relevant, mpi_communicator);
     body_force = mechanics->body_force();
-    if (contact)
+    if (contact && first)
       contact->update_candidates(ghosted(u, u_ghost));
     // before the sparsity pattern: an iterative solver wants the fill-in
     // (a refused solver is refused on every process: one message)
@@ -313,7 +344,10 @@ namespace ContactDynamics
                                     Utilities::MPI::n_mpi_processes(
                                       mpi_communicator));
     });
-    setup_sparsity();
+    // after a mesh change: once the candidates of the transferred state are
+    // known (reevaluate_committed_state())
+    if (first)
+      setup_sparsity();
   }
 
   template <int dim>
@@ -695,6 +729,9 @@ namespace ContactDynamics
     if (contact)
       for (const auto &c : contact->statistics_columns())
         columns.push_back(c);
+    if (refinement.adapt_to_contact)
+      for (const auto *c : {"cells", "unknowns", "mesh_changes", "transfer_energy"})
+        columns.emplace_back(c);
     check_collectively(mpi_communicator, [&]() {
       if (is_root(mpi_communicator))
         statistics =
@@ -789,7 +826,7 @@ namespace ContactDynamics
     // were tried and could not (doc/contact.md)
     VectorType direction(v_new);
     for (const auto i : locally_owned)
-      if (increment_constraints.is_constrained(i))
+      if (is_held(i))
         direction(i) = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && touched[cell->material_id()] == 0.)
@@ -874,7 +911,10 @@ namespace ContactDynamics
   Simulator<dim>::apply_update(const VectorType &du)
   {
     increment = du;
-    increment_constraints.set_zero(increment);
+    if (hanging_constraints.n_constraints() > 0)
+      increment_constraints.distribute(increment);
+    else
+      increment_constraints.set_zero(increment);
     u_new += increment;
   }
 
@@ -958,15 +998,37 @@ namespace ContactDynamics
         contact->start_step();
       }
     NewtonSolver::Result result;
-    {
-      TimerOutput::Scope t(*timer, "Newton solve");
-      result = newton.solve(*this,
-                            jacobian,
-                            residual,
-                            increment,
-                            structure_changed,
-                            screen_log());
-    }
+    unsigned int         earlier_iterations = 0; // of the passes before
+    for (unsigned int pass = 0;; ++pass)
+      {
+        {
+          TimerOutput::Scope t(*timer, "Newton solve");
+          result = newton.solve(*this,
+                                jacobian,
+                                residual,
+                                increment,
+                                structure_changed,
+                                screen_log());
+        }
+        result.iterations += earlier_iterations;
+        earlier_iterations = result.iterations;
+        // a mesh that follows the contact of this step, and the step again
+        // on it from its transferred trial state
+        if (!result.converged || !refinement.adapt_to_contact ||
+            pass >= refinement.passes_per_step ||
+            (step + 1) % refinement.interval != 0 || !adapt_mesh())
+          break;
+        structure_changed = true;
+        for (const auto &p : dirichlet.values(dof_handler, t_new))
+          if (locally_owned.is_element(p.first))
+            u_new(p.first) = p.second;
+        u_new.compress(VectorOperation::insert);
+        if (contact)
+          {
+            contact->set_times(time, t_new);
+            contact->start_step();
+          }
+      }
     std::string failure = result.failure;
 
     EnergyBalance updated = energies;
@@ -982,7 +1044,7 @@ namespace ContactDynamics
           dt * mechanics->damping_product(mean_velocity, mean_velocity);
         double boundary_work = 0;
         for (const auto &line : increment_constraints.get_lines())
-          if (locally_owned.is_element(line.index))
+          if (locally_owned.is_element(line.index) && line.entries.empty())
             boundary_work +=
               increment(line.index) * 0.5 *
               (residual_full_old(line.index) + residual_full(line.index));
@@ -1072,6 +1134,12 @@ namespace ContactDynamics
     if (contact)
       for (const double x : contact->statistics())
         row.push_back(x);
+    if (refinement.adapt_to_contact)
+      for (const double x : {double(triangulation->n_global_active_cells()),
+                             double(dof_handler.n_dofs()),
+                             double(mesh_changes),
+                             energies.transfer})
+        row.push_back(x);
     const unsigned int interval = output_parameters.vtu_interval;
     try
       {
@@ -1106,6 +1174,162 @@ namespace ContactDynamics
   }
 
   template <int dim>
+  bool
+  Simulator<dim>::adapt_mesh()
+  {
+    {
+      TimerOutput::Scope t(*timer, "mesh adaptation");
+      // u_ghost: the trial state of the last assembly
+      const std::vector<Point<dim>> zone =
+        contact ? contact->contact_zone(u_ghost,
+                                        refinement.lookahead_steps * dt_current) :
+                  std::vector<Point<dim>>();
+      mark_cells_near_contact(dof_handler, u_ghost, zone, refinement, base_level);
+    }
+    return refine_and_transfer();
+  }
+
+  template <int dim>
+  bool
+  Simulator<dim>::refine_and_transfer()
+  {
+    auto *tria = dynamic_cast<parallel::distributed::Triangulation<dim> *>(
+      triangulation.get());
+    AssertThrow(tria != nullptr,
+                ExcMessage("Mesh refinement needs Parallel/Mesh = distributed."));
+    TimerOutput::Scope t(*timer, "mesh adaptation");
+    tria->prepare_coarsening_and_refinement();
+    if (!any_cell_flagged(*tria, mpi_communicator))
+      return false;
+
+    const double energy_before = energies.kinetic + energies.elastic;
+    // the velocity that coarsening would interpolate: its projection keeps
+    // the momenta and cannot add kinetic energy (the multipliers and the
+    // prescribed values stay)
+    {
+      std::vector<bool> extra(fe->n_components(), true);
+      for (unsigned int d = 0; d < dim; ++d)
+        extra[d] = false;
+      IndexSet fixed = union_over_processes(
+        DoFTools::extract_dofs(dof_handler, ComponentMask(extra)),
+        mpi_communicator);
+      fixed.add_indices(dirichlet_dofs);
+      project_before_coarsening(dof_handler,
+                                mechanics->mass_matrix(),
+                                hanging_constraints,
+                                fixed,
+                                v);
+    }
+    const auto   cells_before   = tria->n_global_active_cells();
+    const auto   unknowns_before = dof_handler.n_dofs();
+    // the committed state and the trial state of the step
+    const std::array<VectorType *, 4> state{{&u, &v, &a, &u_new}};
+    std::array<VectorType, 4>         old;
+    for (unsigned int i = 0; i < state.size(); ++i)
+      ghosted(*state[i], old[i]);
+    parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
+      dof_handler);
+    transfer.prepare_for_coarsening_and_refinement(
+      {&old[0], &old[1], &old[2], &old[3]});
+    tria->execute_coarsening_and_refinement();
+    t.stop();
+
+    setup_system(false);
+    std::vector<VectorType *> out(state.begin(), state.end());
+    transfer.interpolate(out);
+    for (VectorType *x : out)
+      {
+        hanging_constraints.distribute(*x);
+        // the unused multipliers (interpolated next to surface nodes)
+        for (const auto &line : increment_constraints.get_lines())
+          if (line.entries.empty() && !dirichlet_dofs.is_element(line.index) &&
+              locally_owned.is_element(line.index))
+            (*x)(line.index) = 0;
+        x->compress(VectorOperation::insert);
+      }
+    for (const bool trial : {false, true})
+      {
+        VectorType &x = trial ? u_new : u;
+        for (const auto &p : dirichlet.values(dof_handler,
+                                              trial ? time + dt_current : time))
+          if (locally_owned.is_element(p.first))
+            x(p.first) = p.second;
+        x.compress(VectorOperation::insert);
+      }
+    reevaluate_committed_state();
+    if (integrator.is_dynamic())
+      {
+        // the acceleration the equation of motion gives on the new mesh:
+        // Newmark keeps the energy only from a balanced state
+        VectorType correction(residual_full_old), mass_correction(a);
+        correction *= -1;
+        condense_rows(increment_constraints, correction);
+        solve_constrained_mass_system(mechanics->mass_matrix(),
+                                      increment_constraints,
+                                      correction);
+        a += correction;
+        mechanics->mass_matrix().vmult(mass_correction, correction);
+        residual_full_old += mass_correction;
+      }
+
+    energies.kinetic =
+      integrator.is_dynamic() ? mechanics->kinetic_energy(v) : 0.;
+    energies.elastic = mechanics->elastic_energy(ghosted(u, u_ghost));
+    const double energy_after = energies.kinetic + energies.elastic;
+    energies.transfer += energy_after - energy_before;
+    ++mesh_changes;
+    pcout << "  mesh at t = " << time << ": " << cells_before << " -> "
+          << tria->n_global_active_cells() << " cells, " << unknowns_before
+          << " -> " << dof_handler.n_dofs()
+          << " unknowns; E_kin+E_el = " << std::setprecision(10)
+          << energy_before << " -> " << energy_after << std::setprecision(6)
+          << std::endl;
+    return true;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::reevaluate_committed_state()
+  {
+    // the reactions at the committed state, for the trapezoidal external
+    // work of the next step
+    mechanics->assemble(ghosted(u, u_ghost),
+                        ghosted(v, v_ghost),
+                        a,
+                        integrator.is_dynamic() ? 1. : 0.,
+                        0.,
+                        increment_constraints,
+                        false,
+                        residual,
+                        jacobian,
+                        residual_full_old);
+    if (contact)
+      {
+        // the node states, forces and face memory of the committed state,
+        // committed again without work
+        contact->set_times(time, time);
+        contact->update_candidates(u_ghost);
+      }
+    setup_sparsity();
+    if (contact)
+      {
+        VectorType contact_residual(residual);
+        contact->assemble(TrialState{u_ghost,
+                                     v_ghost,
+                                     integrator.velocity_factor(dt_current),
+                                     dt_current,
+                                     integrator.is_dynamic(),
+                                     integrator},
+                          increment_constraints,
+                          false,
+                          contact_residual,
+                          jacobian,
+                          residual_full_old);
+        contact->commit_step(u_ghost, u);
+      }
+  }
+
+  template <int dim>
   Tensor<1, dim>
   Simulator<dim>::reaction_force(const std::string &surface) const
   {
@@ -1118,8 +1342,7 @@ namespace ContactDynamics
         for (const auto i : DoFTools::extract_boundary_dofs(dof_handler,
                                                             ComponentMask(mask),
                                                             {id}))
-          if (increment_constraints.is_constrained(i) &&
-              locally_owned.is_element(i))
+          if (is_held(i) && locally_owned.is_element(i))
             // the support balances the unconstrained residual there
             force[d] += residual_full_old(i);
       }
@@ -1242,6 +1465,10 @@ namespace ContactDynamics
         const double dt_try = std::min(dt, end_time - time);
         if (advance(dt_try))
           {
+            // the mesh for the next step (without solving this one again)
+            if (refinement.adapt_to_contact && refinement.passes_per_step == 0 &&
+                step % refinement.interval == 0)
+              adapt_mesh();
             if (dt < time_step && ++good_since_cut >= 2)
               {
                 dt             = std::min(2 * dt, time_step);

@@ -18,6 +18,7 @@
 #include <contact_dynamics/mechanics/boundary_conditions.h>
 #include <contact_dynamics/mechanics/solid_mechanics.h>
 #include <contact_dynamics/mechanics/time_integrator.h>
+#include <contact_dynamics/mesh/contact_refinement.h>
 #include <contact_dynamics/output/contact_writer.h>
 #include <contact_dynamics/output/postprocessing.h>
 #include <contact_dynamics/parallel.h>
@@ -45,12 +46,13 @@ namespace ContactDynamics
     double initial    = 0; // kinetic + elastic at t = 0
     double frictional = 0; // dissipated by contact friction
     double obstacle   = 0; // work of moving rigid obstacles on the bodies
+    double transfer   = 0; // energy change of the mesh transfers
 
     double
     error() const
     {
       return kinetic + elastic + dissipated + frictional - external - obstacle -
-             initial;
+             transfer - initial;
     }
   };
 
@@ -132,6 +134,32 @@ namespace ContactDynamics
       return v;
     }
 
+    /** The mesh (for tests that set refinement flags). */
+    parallel::TriangulationBase<dim> &
+    get_triangulation()
+    {
+      return *triangulation;
+    }
+
+    /**
+     * Refines and coarsens the distributed mesh as its cells are flagged
+     * and transfers the state to the new mesh: displacement, velocity and
+     * acceleration (and the trial state of the step, with its multipliers)
+     * by interpolation; the contact history is evaluated again at the
+     * committed state. The energy change is added to energy().transfer.
+     * False (nothing done) if no cell is flagged after the mesh's own
+     * rules. Collective.
+     */
+    bool
+    refine_and_transfer();
+
+    /** The number of mesh changes so far. */
+    unsigned int
+    n_mesh_changes() const
+    {
+      return mesh_changes;
+    }
+
     /** Sets up the unknowns and the initial state (called by run()). */
     void
     initialize();
@@ -174,8 +202,18 @@ namespace ContactDynamics
     bool
     jacobian_is_constant() const override;
 
+    /** `first`: at the start; else after a mesh change (keeps the contact
+     * history's totals and the output files). */
     void
-    setup_system();
+    setup_system(const bool first = true);
+    /** Marks the cells near the trial state's contact zone and
+     * refine_and_transfer(). */
+    bool
+    adapt_mesh();
+    /** The bulk reactions of the committed state and, with contact, its
+     * history on a new mesh. */
+    void
+    reevaluate_committed_state();
     void
     setup_sparsity();
     /** u and v at t = 0 from the bodies' initial conditions. */
@@ -208,6 +246,15 @@ namespace ContactDynamics
     output_step(const unsigned int newton_iterations,
                 const double       residual,
                 const bool         force_vtu);
+
+    /** A degree of freedom held fixed (Dirichlet or an unused multiplier),
+     * not one that follows others (a hanging node). */
+    bool
+    is_held(const types::global_dof_index i) const
+    {
+      const auto *entries = increment_constraints.get_constraint_entries(i);
+      return entries != nullptr && entries->empty();
+    }
 
     /** `x` with the ghost entries this process reads, in `ghost`. */
     const VectorType &
@@ -248,6 +295,9 @@ namespace ContactDynamics
     MatrixType       jacobian;
     NewtonSolver     newton;
     OutputParameters output_parameters;
+    RefinementParameters refinement;
+    unsigned int         base_level   = 0; // of the initial mesh
+    unsigned int         mesh_changes = 0;
 
     MPI_Comm                                          mpi_communicator;
     ParallelParameters                                parallel_parameters;
@@ -259,6 +309,9 @@ namespace ContactDynamics
     // owned, neighbours of owned cells, and every contact surface dof
     IndexSet                             locally_relevant;
     AffineConstraints<double>            increment_constraints;
+    // hanging nodes only, with their inhomogeneities zero: for the state
+    AffineConstraints<double> hanging_constraints;
+    IndexSet                  dirichlet_dofs;
     std::unique_ptr<SolidMechanics<dim>> mechanics;
 
     // state at t_n, the trial state at t_{n+1}, and work vectors

@@ -384,6 +384,15 @@ namespace ContactDynamics
 
   template <int dim>
   void
+  NodeToSegmentContact<dim>::remesh(const DoFHandler<dim> &dof_handler)
+  {
+    SurfaceContact<dim>::remesh(dof_handler);
+    committed_face.clear();
+    trial_face.clear();
+  }
+
+  template <int dim>
+  void
   NodeToSegmentContact<dim>::commit_step(const VectorType &u,
                                          const VectorType &old_u)
   {

@@ -400,6 +400,49 @@ namespace ContactDynamics
 
   template <int dim>
   void
+  SurfaceContact<dim>::remesh(const DoFHandler<dim> &dof_handler)
+  {
+    const double contact_work = work.work(), dissipation = work.dissipation();
+    setup(dof_handler);
+    work.carry_totals(contact_work, dissipation);
+    // the vectors of the old mesh; the next update_candidates() takes its
+    // state as the committed one
+    committed_u.clear();
+    gap_field.clear();
+    for (auto &field : slip_field)
+      field.clear();
+    committed_is_next = true;
+  }
+
+  template <int dim>
+  std::vector<Point<dim>>
+  SurfaceContact<dim>::contact_zone(const VectorType &u,
+                                    const double      lookahead) const
+  {
+    // each process its own nodes (their rates are known there)
+    std::vector<Point<dim>> points;
+    for (const auto &pair : pairs)
+      for (unsigned int j = 0; j < pair.nodes.size(); ++j)
+        {
+          const NodeState &node = pair.nodes[j];
+          if (pair.owned_node[j] &&
+              (node.active ||
+               (node.projected &&
+                node.normalized_gap() +
+                    std::min(0., node.velocity_rate) * lookahead <=
+                  0)))
+            points.push_back(pair.secondary.position(j, u));
+        }
+    if (Utilities::MPI::n_mpi_processes(comm) == 1)
+      return points;
+    std::vector<Point<dim>> all;
+    for (const auto &part : Utilities::MPI::all_gather(comm, points))
+      all.insert(all.end(), part.begin(), part.end());
+    return all;
+  }
+
+  template <int dim>
+  void
   SurfaceContact<dim>::set_up_obstacle(
     PairData                      &pair,
     const RigidObstacleParameters &parameters) const
@@ -589,6 +632,9 @@ namespace ContactDynamics
     // configuration (as for PairData::position)
     if (committed_u.size() != u.size())
       committed_u.reinit(u);
+    if (committed_is_next)
+      committed_u = u;
+    committed_is_next = false;
     bool rebuild = false;
     for (auto &pair : pairs)
       {

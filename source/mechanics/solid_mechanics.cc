@@ -382,6 +382,13 @@ namespace ContactDynamics
   SolidMechanics<dim>::setup(const AffineConstraints<double> &constraints)
   {
     jacobian_constraints = &constraints;
+    hanging_rows.clear();
+    for (const auto &line : constraints.get_lines())
+      if (!line.entries.empty() &&
+          dof_handler.locally_owned_dofs().is_element(line.index))
+        hanging_rows.emplace_back(line.index, line.entries);
+    any_hanging_rows = Utilities::MPI::max(unsigned(!hanging_rows.empty()),
+                                           dof_handler.get_communicator()) > 0;
     owned_cells.clear();
     nonlinear_cells.clear();
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -696,8 +703,18 @@ namespace ContactDynamics
         linear_stiffness.vmult(product, owned(u, scratch[0]));
         residual_full += product;
       }
+    // the rows of hanging nodes go to the rows they follow (C^T r);
     // homogeneous constraints without entries: the rows are dropped
     residual = residual_full;
+    if (any_hanging_rows)
+      {
+        for (const auto &row : hanging_rows)
+          for (const auto &entry : row.second)
+            residual.add(std::vector<types::global_dof_index>{entry.first},
+                         std::vector<double>{entry.second *
+                                             residual_full(row.first)});
+        residual.compress(VectorOperation::add);
+      }
     constraints.set_zero(residual);
   }
 

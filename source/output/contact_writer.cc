@@ -20,7 +20,33 @@ namespace ContactDynamics
     : comm(comm)
     , directory(directory)
   {
+    locate_monitored_nodes(contact);
+    if (directory.empty() || !is_root(comm))
+      return;
+    errno   = 0;
+    history = std::make_unique<std::ofstream>(history_name());
+    check_written(*history, history_name());
+    *history << "time";
+    for (const auto &m : monitored)
+      {
+        const auto &X = contact.secondary_nodes(m.first).reference[m.second];
+        std::ostringstream where;
+        for (unsigned int k = 0; k < dim; ++k)
+          where << (k ? " " : "") << X[k];
+        *history << ",pressure(" << where.str() << ")"
+                 << ",gap(" << where.str() << ")";
+      }
+    *history << std::endl;
+    check_written(*history, history_name());
+  }
+
+  template <int dim>
+  void
+  ContactWriter<dim>::locate_monitored_nodes(
+    const ContactFormulation<dim> &contact)
+  {
     // monitored points: the nearest secondary node of any pair
+    monitored.clear();
     for (const auto &point : contact.monitored_points())
       {
         double                                best = 1e300;
@@ -42,23 +68,6 @@ namespace ContactDynamics
           }
         monitored.push_back(where);
       }
-    if (directory.empty() || !is_root(comm))
-      return;
-    errno   = 0;
-    history = std::make_unique<std::ofstream>(history_name());
-    check_written(*history, history_name());
-    *history << "time";
-    for (const auto &m : monitored)
-      {
-        const auto &X = contact.secondary_nodes(m.first).reference[m.second];
-        std::ostringstream where;
-        for (unsigned int k = 0; k < dim; ++k)
-          where << (k ? " " : "") << X[k];
-        *history << ",pressure(" << where.str() << ")"
-                 << ",gap(" << where.str() << ")";
-      }
-    *history << std::endl;
-    check_written(*history, history_name());
   }
 
   template <int dim>

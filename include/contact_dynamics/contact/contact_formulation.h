@@ -134,6 +134,35 @@ namespace ContactDynamics
     setup(const DoFHandler<dim> &dof_handler) = 0;
 
     /**
+     * After the mesh changed (adaptive refinement) and distribute_dofs:
+     * setup() again, keeping the work and dissipation done so far. The node
+     * history restarts from the committed state, which the caller then
+     * assembles and commits (with old_u = u: no work).
+     */
+    virtual void
+    remesh(const DoFHandler<dim> &dof_handler)
+    {
+      (void)dof_handler;
+      AssertThrow(false,
+                  ExcMessage("This contact formulation cannot follow a "
+                             "changing mesh."));
+    }
+
+    /**
+     * The current positions (configuration `u`, ghosted) of the secondary
+     * nodes in contact at the last assembly and of those whose gap closes
+     * within `lookahead` time at its present rate; the same on every
+     * process (collective).
+     */
+    virtual std::vector<Point<dim>>
+    contact_zone(const VectorType &u, const double lookahead) const
+    {
+      (void)u;
+      (void)lookahead;
+      return {};
+    }
+
+    /**
      * The boundary ids of the secondary surfaces: their cells carry the
      * contact work (weighted partitioning).
      */

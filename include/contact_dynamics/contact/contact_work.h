@@ -27,6 +27,17 @@ namespace ContactDynamics
            const std::vector<types::global_dof_index> &dofs,
            const bool                                  friction);
 
+    /**
+     * After reinit() on a new mesh: the work and dissipation done on the
+     * old one.
+     */
+    void
+    carry_totals(const double work, const double dissipation)
+    {
+      contact_work           = work;
+      frictional_dissipation = dissipation;
+    }
+
     /** Before an assembly: the trial forces start from zero. */
     void
     start_assembly();

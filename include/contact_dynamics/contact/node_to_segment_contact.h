@@ -36,6 +36,10 @@ namespace ContactDynamics
     void
     start_step() override;
 
+    /** The face memory refers to the old mesh's nodes: it starts empty. */
+    void
+    remesh(const DoFHandler<dim> &dof_handler) override;
+
     /** Also commits the face memory of the projections. */
     void
     commit_step(const VectorType &u, const VectorType &old_u) override;

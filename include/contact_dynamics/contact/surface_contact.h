@@ -91,6 +91,12 @@ namespace ContactDynamics
     void
     setup(const DoFHandler<dim> &dof_handler) override;
 
+    void
+    remesh(const DoFHandler<dim> &dof_handler) override;
+
+    std::vector<Point<dim>>
+    contact_zone(const VectorType &u, const double lookahead) const override;
+
     std::vector<types::boundary_id>
     secondary_boundary_ids() const override;
 
@@ -552,6 +558,7 @@ namespace ContactDynamics
     // the state of the last committed step (ghosted like the trial state),
     // for the swept search; zero (the reference configuration) before it
     VectorType committed_u;
+    bool       committed_is_next = false; // after remesh()
 
     std::vector<types::global_dof_index> normal_multiplier_dofs;
     std::vector<types::global_dof_index> other_multiplier_dofs;

@@ -109,6 +109,13 @@ namespace ContactDynamics
     double
     kinetic_energy(const VectorType &v) const;
 
+    /** The consistent mass matrix (unconstrained). */
+    const MatrixType &
+    mass_matrix() const
+    {
+      return mass;
+    }
+
     /** Integral of the stored energy density. */
     double
     elastic_energy(const VectorType &u) const;
@@ -171,6 +178,13 @@ namespace ContactDynamics
     std::vector<std::unique_ptr<Material<dim>>> materials;
 
     const AffineConstraints<double> *jacobian_constraints = nullptr;
+    // the owned rows of hanging nodes (adapted meshes), which the residual
+    // adds to the rows they follow; whether any process has one
+    std::vector<
+      std::pair<types::global_dof_index,
+                std::vector<std::pair<types::global_dof_index, double>>>>
+         hanging_rows;
+    bool any_hanging_rows = false;
     std::vector<CellIterator>        owned_cells, nonlinear_cells;
     // their shape gradients and JxW at the quadrature points, cell by cell
     std::vector<Tensor<1, dim>> nonlinear_gradients;

@@ -32,6 +32,13 @@ namespace ContactDynamics
                   const MPI_Comm                 comm,
                   const std::string             &directory);
 
+    /**
+     * The secondary node nearest to each monitored point (again after a
+     * mesh change: a refined mesh may have a nearer one).
+     */
+    void
+    locate_monitored_nodes(const ContactFormulation<dim> &contact);
+
     /** A row of contact_history.csv after the step to `time`; every write
      * is checked (throws naming the file). */
     void

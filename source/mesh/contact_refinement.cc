@@ -1,0 +1,394 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/numerics/rtree.h>
+
+#include <contact_dynamics/mesh/contact_refinement.h>
+#include <contact_dynamics/parameters.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ContactDynamics
+{
+  void
+  RefinementParameters::declare_parameters(ParameterHandler &prm)
+  {
+    const RefinementParameters d;
+    prm.declare_entry(
+      "Adapt to contact",
+      default_text(d.adapt_to_contact),
+      Patterns::Bool(),
+      "Refine the mesh where contact is active or predicted and coarsen "
+      "where it has left, transferring the state (displacement, velocity, "
+      "acceleration, multipliers) to the new mesh; the energy change of "
+      "each transfer is its own column of statistics.csv. The mesh is then "
+      "distributed (p4est) whatever Parallel/Mesh says. 2-D only: a refined "
+      "patch of a 3-D contact surface has hanging nodes on the surface. "
+      "See doc/refinement.md for what it costs and buys.");
+    prm.declare_entry("Interval",
+                      default_text(d.interval),
+                      Patterns::Integer(1, 1000000),
+                      "Adapt the mesh after every this many time steps.");
+    prm.declare_entry(
+      "Maximum levels",
+      default_text(d.maximum_levels),
+      Patterns::Integer(0, 12),
+      "Refinement levels above the initial mesh (each halves the cell "
+      "size); coarsening never goes below the initial mesh.");
+    prm.declare_entry("Maximum cells",
+                      default_text(d.maximum_cells),
+                      Patterns::Integer(1, 100000000),
+                      "Refinements that would make more cells than this are "
+                      "not made (those farthest from the contact first).");
+    prm.declare_entry(
+      "Buffer cells",
+      default_text(d.buffer_cells),
+      Patterns::Double(0.1, 100),
+      "A cell within this many of its own diameters of the contact zone "
+      "is refined: each level keeps about this many cells between the "
+      "contact and the next coarser level. A cell farther than this many "
+      "plus one of its parent's diameters is coarsened.");
+    prm.declare_entry(
+      "Lookahead steps",
+      default_text(d.lookahead_steps),
+      Patterns::Double(0, 1e6),
+      "The contact zone: the secondary nodes in contact and those whose "
+      "gap, at its present rate, closes within this many time steps.");
+    prm.declare_entry(
+      "Passes per step",
+      default_text(d.passes_per_step),
+      Patterns::Integer(0, 20),
+      "After a step converged, the mesh is adapted to its contact zone and "
+      "the step solved again on the new mesh, until the mesh no longer "
+      "changes or this many times (each pass refines by one level at "
+      "most: a quasi-static step wants Maximum levels passes). 0: the mesh "
+      "is adapted after the step for the next one, and no step is solved "
+      "twice (the Lookahead steps must then see the contact coming).");
+    prm.declare_entry("Coarsen",
+                      default_text(d.coarsen),
+                      Patterns::Bool(),
+                      "Coarsen where the contact has left (interpolation: "
+                      "the energy change is reported).");
+  }
+
+  void
+  RefinementParameters::parse_parameters(ParameterHandler  &prm,
+                                         const unsigned int dim)
+  {
+    adapt_to_contact = prm.get_bool("Adapt to contact");
+    interval         = prm.get_integer("Interval");
+    maximum_levels   = prm.get_integer("Maximum levels");
+    maximum_cells    = prm.get_integer("Maximum cells");
+    buffer_cells     = prm.get_double("Buffer cells");
+    lookahead_steps  = prm.get_double("Lookahead steps");
+    passes_per_step  = prm.get_integer("Passes per step");
+    coarsen          = prm.get_bool("Coarsen");
+    AssertThrow(!adapt_to_contact || dim == 2,
+                ExcMessage(
+                  "Mesh refinement/Adapt to contact = true is not available "
+                  "in 3-D: a refined patch of a 3-D contact surface has "
+                  "hanging nodes on the surface, which the contact "
+                  "formulations do not treat yet. Use Scene/Refinement "
+                  "factor (or a graded Gmsh mesh) in 3-D."));
+  }
+
+  template <int dim>
+  void
+  mark_cells_near_contact(const DoFHandler<dim, dim>    &dof_handler,
+                          const VectorType              &u,
+                          const std::vector<Point<dim>> &contact_points,
+                          const RefinementParameters    &parameters,
+                          const unsigned int             base_level)
+  {
+    const MPI_Comm comm     = dof_handler.get_communicator();
+    const auto     tree     = pack_rtree(contact_points);
+    const auto    &tria     = dof_handler.get_triangulation();
+    const double   buffer   = parameters.buffer_cells;
+    const unsigned int top  = base_level + parameters.maximum_levels;
+    const unsigned int kids = 1u << dim;
+
+    // distance of each owned cell's current position to the contact zone,
+    // in units of its diameter
+    std::vector<std::pair<double, typename Triangulation<dim>::active_cell_iterator>>
+      refine;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (!cell->is_locally_owned())
+          continue;
+        cell->clear_refine_flag();
+        cell->clear_coarsen_flag();
+        Point<dim>                      center;
+        std::array<Point<dim>, 1 << dim> x;
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            x[v] = cell->vertex(v);
+            for (unsigned int d = 0; d < dim; ++d)
+              x[v][d] += u(cell->vertex_dof_index(v, d));
+            center += x[v] / double(kids);
+          }
+        double radius = 0;
+        for (const auto &p : x)
+          radius = std::max(radius, center.distance(p));
+        double distance = std::numeric_limits<double>::infinity();
+        if (!contact_points.empty())
+          {
+            std::vector<Point<dim>> nearest;
+            tree.query(boost::geometry::index::nearest(center, 1),
+                       std::back_inserter(nearest));
+            distance = std::max(0., center.distance(nearest[0]) - radius);
+          }
+        const double diameter = 2 * radius;
+        const unsigned int level = cell->level();
+        if (distance < buffer * diameter && level < top)
+          refine.emplace_back(distance / diameter,
+                              typename Triangulation<dim>::active_cell_iterator(
+                                cell));
+        else if (parameters.coarsen && level > base_level &&
+                 distance > (buffer + 1) * 2 * diameter)
+          cell->set_coarsen_flag();
+      }
+
+    // the cell limit: refine the nearest cells only (a bisection on the
+    // relative distance, the same on every process)
+    const double n_cells  = tria.n_global_active_cells();
+    const auto   n_refine = [&](const double threshold) {
+      double n = 0;
+      for (const auto &r : refine)
+        n += r.first <= threshold;
+      return Utilities::MPI::sum(n, comm);
+    };
+    const double room = (double(parameters.maximum_cells) - n_cells) / (kids - 1);
+    double threshold = buffer;
+    if (n_refine(threshold) > room)
+      {
+        double low = -1, high = buffer;
+        for (unsigned int i = 0; i < 50; ++i)
+          {
+            const double mid = 0.5 * (low + high);
+            (n_refine(mid) > room ? high : low) = mid;
+          }
+        threshold = low;
+      }
+    for (const auto &r : refine)
+      if (r.first <= threshold)
+        r.second->set_refine_flag();
+  }
+
+  namespace
+  {
+    // y <- C^T y for the constraints' owned lines with entries (their rows
+    // go to the rows they follow), then the constrained rows are zero
+    void
+    condense(const AffineConstraints<double> &constraints, VectorType &y)
+    {
+      const IndexSet owned = y.locally_owned_elements();
+      VectorType     moved(y);
+      for (const auto &line : constraints.get_lines())
+        if (owned.is_element(line.index))
+          for (const auto &entry : line.entries)
+            moved.add(std::vector<types::global_dof_index>{entry.first},
+                      std::vector<double>{entry.second * y(line.index)});
+      moved.compress(VectorOperation::add);
+      y = moved;
+      constraints.set_zero(y);
+    }
+  } // namespace
+
+  void
+  condense_rows(const AffineConstraints<double> &constraints, VectorType &y)
+  {
+    condense(constraints, y);
+  }
+
+  void
+  solve_constrained_mass_system(const TrilinosWrappers::SparseMatrix &mass,
+                                const AffineConstraints<double> &constraints,
+                                VectorType                      &x)
+  {
+    // CG, Jacobi-preconditioned: the mass matrix is conditioned
+    // independently of the mesh size
+    const IndexSet owned = x.locally_owned_elements();
+    VectorType     diagonal(x), r(x), p(x), q(x), z(x), y(x);
+    for (const auto i : owned)
+      diagonal(i) = constraints.is_constrained(i) || !(mass.diag_element(i) > 0) ?
+                      0. :
+                      1. / mass.diag_element(i);
+    diagonal.compress(VectorOperation::insert);
+    r = x;
+    constraints.set_zero(r);
+    x                   = 0;
+    const double b_norm = r.l2_norm();
+    if (b_norm > 0)
+      {
+        z = r;
+        z.scale(diagonal);
+        p          = z;
+        double rho = r * z;
+        for (unsigned int it = 0; it < 10000 && r.l2_norm() > 1e-14 * b_norm;
+             ++it)
+          {
+            y = p;
+            constraints.distribute(y);
+            mass.vmult(q, y);
+            condense(constraints, q);
+            const double alpha = rho / (p * q);
+            x.add(alpha, p);
+            r.add(-alpha, q);
+            z = r;
+            z.scale(diagonal);
+            const double rho_new = r * z;
+            p.sadd(rho_new / rho, 1., z);
+            rho = rho_new;
+          }
+      }
+    constraints.distribute(x);
+  }
+
+  template <int dim>
+  bool
+  project_before_coarsening(const DoFHandler<dim, dim>           &dof_handler,
+                            const TrilinosWrappers::SparseMatrix &mass,
+                            const AffineConstraints<double>      &hanging,
+                            const IndexSet                       &fixed,
+                            VectorType                           &v)
+  {
+    const MPI_Comm comm  = dof_handler.get_communicator();
+    const auto    &fe    = dof_handler.get_fe();
+    const IndexSet owned = dof_handler.locally_owned_dofs();
+    IndexSet       relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+
+    // the removed vertices of the families to be coarsened follow the
+    // parent's vertices (d-linear interpolation in the parent)
+    AffineConstraints<double> family(relevant);
+    unsigned int              n_families = 0;
+    for (const auto &cell : dof_handler.cell_iterators())
+      {
+        bool coarsened = cell->has_children();
+        for (unsigned int c = 0; coarsened && c < cell->n_children(); ++c)
+          coarsened = cell->child(c)->is_active() &&
+                      cell->child(c)->is_locally_owned() &&
+                      cell->child(c)->coarsen_flag_set();
+        if (!coarsened)
+          continue;
+        ++n_families;
+        for (unsigned int c = 0; c < cell->n_children(); ++c)
+          for (const unsigned int k : cell->child(c)->vertex_indices())
+            {
+              if (k == c)
+                continue; // the parent's vertex
+              Point<dim> xi;
+              for (unsigned int d = 0; d < dim; ++d)
+                xi[d] = 0.5 * (GeometryInfo<dim>::unit_cell_vertex(c)[d] +
+                               GeometryInfo<dim>::unit_cell_vertex(k)[d]);
+              for (unsigned int comp = 0; comp < fe.n_components(); ++comp)
+                {
+                  const auto i = cell->child(c)->vertex_dof_index(k, comp);
+                  if (family.is_constrained(i) || fixed.is_element(i))
+                    continue;
+                  family.add_line(i);
+                  for (const unsigned int p : cell->vertex_indices())
+                    if (const double w =
+                          GeometryInfo<dim>::d_linear_shape_function(xi, p);
+                        std::abs(w) > 1e-14)
+                      family.add_entry(i, cell->vertex_dof_index(p, comp), w);
+                }
+            }
+      }
+    if (Utilities::MPI::sum(n_families, comm) == 0)
+      return false;
+    for (const auto &line : hanging.get_lines())
+      if (relevant.is_element(line.index) && !family.is_constrained(line.index) &&
+          !fixed.is_element(line.index))
+        {
+          family.add_line(line.index);
+          family.add_entries(line.index, line.entries);
+        }
+    family.make_consistent_in_parallel(owned, relevant, comm);
+    // H: also the fixed values (homogeneous: the unknown is w - w0)
+    AffineConstraints<double> with_fixed(relevant);
+    for (const auto &line : family.get_lines())
+      {
+        with_fixed.add_line(line.index);
+        with_fixed.add_entries(line.index, line.entries);
+      }
+    for (const auto i : fixed & relevant)
+      if (!with_fixed.is_constrained(i))
+        with_fixed.add_line(i);
+    family.close();
+    with_fixed.close();
+
+    // w0: the fixed values and what follows from them alone
+    VectorType w0(v);
+    for (const auto i : owned)
+      if (!fixed.is_element(i))
+        w0(i) = 0;
+    w0.compress(VectorOperation::insert);
+    family.distribute(w0);
+
+    // H^T M H z = H^T M (v - w0)
+    VectorType r(v);
+    r -= w0;
+    VectorType solution(v);
+    mass.vmult(solution, r);
+    condense(with_fixed, solution);
+    solve_constrained_mass_system(mass, with_fixed, solution);
+    v = w0;
+    v += solution;
+    return true;
+  }
+
+  template <int dim>
+  bool
+  any_cell_flagged(const Triangulation<dim> &triangulation,
+                   const MPI_Comm            comm)
+  {
+    unsigned int flagged = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          (cell->refine_flag_set() || cell->coarsen_flag_set()))
+        ++flagged;
+    return Utilities::MPI::sum(flagged, comm) > 0;
+  }
+
+  template void
+  mark_cells_near_contact<2>(const DoFHandler<2, 2> &,
+                             const VectorType &,
+                             const std::vector<Point<2>> &,
+                             const RefinementParameters &,
+                             const unsigned int);
+  template void
+  mark_cells_near_contact<3>(const DoFHandler<3, 3> &,
+                             const VectorType &,
+                             const std::vector<Point<3>> &,
+                             const RefinementParameters &,
+                             const unsigned int);
+  template bool
+  project_before_coarsening<2>(const DoFHandler<2, 2> &,
+                               const TrilinosWrappers::SparseMatrix &,
+                               const AffineConstraints<double> &,
+                               const IndexSet &,
+                               VectorType &);
+  template bool
+  project_before_coarsening<3>(const DoFHandler<3, 3> &,
+                               const TrilinosWrappers::SparseMatrix &,
+                               const AffineConstraints<double> &,
+                               const IndexSet &,
+                               VectorType &);
+  template bool
+  any_cell_flagged<2>(const Triangulation<2> &, const MPI_Comm);
+  template bool
+  any_cell_flagged<3>(const Triangulation<3> &, const MPI_Comm);
+} // namespace ContactDynamics
