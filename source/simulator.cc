@@ -304,11 +304,19 @@ namespace ContactDynamics
       increment_constraints.add_line(i);
     if (contact)
       contact->add_constraints(increment_constraints);
+    held_dofs = IndexSet(dof_handler.n_dofs());
+    for (const auto &line : increment_constraints.get_lines())
+      held_dofs.add_index(line.index);
+    held_dofs.compress();
     // hanging nodes of an adapted mesh (never on a 2-D contact surface);
     // an unused multiplier stays held at zero
     hanging_constraints.clear();
     DoFTools::make_hanging_node_constraints(dof_handler, hanging_constraints);
     hanging_constraints.close();
+    // (distribute() is collective: every process must take the same path)
+    any_hanging_nodes =
+      Utilities::MPI::max(unsigned(hanging_constraints.n_constraints() > 0),
+                          mpi_communicator) > 0;
     for (const auto &line : hanging_constraints.get_lines())
       if (!increment_constraints.is_constrained(line.index))
         {
@@ -911,7 +919,7 @@ namespace ContactDynamics
   Simulator<dim>::apply_update(const VectorType &du)
   {
     increment = du;
-    if (hanging_constraints.n_constraints() > 0)
+    if (any_hanging_nodes)
       increment_constraints.distribute(increment);
     else
       increment_constraints.set_zero(increment);
@@ -982,14 +990,12 @@ namespace ContactDynamics
       auto ao = a.begin();
       for (; un != u_new.end(); ++un, ++uo, ++vo, ++ao)
         *un = integrator.predict(dt, *uo, *vo, *ao);
-      for (const auto &p : dirichlet.values(dof_handler, t_new))
-        if (locally_owned.is_element(p.first))
-          u_new(p.first) = p.second;
       if (contact)
         for (const auto i : contact->multiplier_dofs())
           if (locally_owned.is_element(i))
             u_new(i) = u(i);
       u_new.compress(VectorOperation::insert);
+      set_prescribed_values(u_new, t_new);
     }
 
     if (contact)
@@ -998,7 +1004,9 @@ namespace ContactDynamics
         contact->start_step();
       }
     NewtonSolver::Result result;
-    unsigned int         earlier_iterations = 0; // of the passes before
+    // of the passes before, on the meshes before
+    unsigned int earlier_iterations = 0, earlier_linear_iterations = 0;
+    bool         adapted            = false;
     for (unsigned int pass = 0;; ++pass)
       {
         {
@@ -1011,18 +1019,21 @@ namespace ContactDynamics
                                 screen_log());
         }
         result.iterations += earlier_iterations;
-        earlier_iterations = result.iterations;
+        result.linear_iterations += earlier_linear_iterations;
+        earlier_iterations        = result.iterations;
+        earlier_linear_iterations = result.linear_iterations;
         // a mesh that follows the contact of this step, and the step again
         // on it from its transferred trial state
         if (!result.converged || !refinement.adapt_to_contact ||
             pass >= refinement.passes_per_step ||
-            (step + 1) % refinement.interval != 0 || !adapt_mesh())
+            !adaptation_due(step + 1,
+                            contact ? contact->n_active_nodes() : 0,
+                            committed_active_nodes) ||
+            !adapt_mesh())
           break;
+        adapted           = true;
         structure_changed = true;
-        for (const auto &p : dirichlet.values(dof_handler, t_new))
-          if (locally_owned.is_element(p.first))
-            u_new(p.first) = p.second;
-        u_new.compress(VectorOperation::insert);
+        set_prescribed_values(u_new, t_new);
         if (contact)
           {
             contact->set_times(time, t_new);
@@ -1044,7 +1055,7 @@ namespace ContactDynamics
           dt * mechanics->damping_product(mean_velocity, mean_velocity);
         double boundary_work = 0;
         for (const auto &line : increment_constraints.get_lines())
-          if (locally_owned.is_element(line.index) && line.entries.empty())
+          if (locally_owned.is_element(line.index) && is_held(line.index))
             boundary_work +=
               increment(line.index) * 0.5 *
               (residual_full_old(line.index) + residual_full(line.index));
@@ -1083,6 +1094,8 @@ namespace ContactDynamics
       {
         structure_changed = true;
         last_failure      = failure.empty() ? "no convergence" : failure;
+        if (adapted)
+          last_failure += " (on the mesh adapted to the step)";
         pcout << "  step to t = " << t_new << " with dt = " << dt
               << " failed: " << last_failure << std::endl;
         return false;
@@ -1093,6 +1106,8 @@ namespace ContactDynamics
       {
         // u_ghost: the converged state, as the last assembly saw it
         contact->commit_step(u_ghost, u);
+        previous_active_nodes  = committed_active_nodes;
+        committed_active_nodes = contact->n_active_nodes();
         energies.kinetic += apply_velocity_update();
         energies.frictional = contact->dissipated_energy();
         energies.obstacle   = contact->obstacle_work();
@@ -1174,6 +1189,18 @@ namespace ContactDynamics
   }
 
   template <int dim>
+  void
+  Simulator<dim>::set_prescribed_values(VectorType &x, const double t)
+  {
+    for (const auto &p : dirichlet.values(dof_handler, t))
+      if (locally_owned.is_element(p.first))
+        x(p.first) = p.second;
+    x.compress(VectorOperation::insert);
+    if (any_hanging_nodes)
+      hanging_constraints.distribute(x);
+  }
+
+  template <int dim>
   bool
   Simulator<dim>::adapt_mesh()
   {
@@ -1239,23 +1266,16 @@ namespace ContactDynamics
     transfer.interpolate(out);
     for (VectorType *x : out)
       {
-        hanging_constraints.distribute(*x);
         // the unused multipliers (interpolated next to surface nodes)
-        for (const auto &line : increment_constraints.get_lines())
-          if (line.entries.empty() && !dirichlet_dofs.is_element(line.index) &&
-              locally_owned.is_element(line.index))
-            (*x)(line.index) = 0;
+        for (const auto i : held_dofs & locally_owned)
+          if (!dirichlet_dofs.is_element(i))
+            (*x)(i) = 0;
         x->compress(VectorOperation::insert);
+        if (any_hanging_nodes)
+          hanging_constraints.distribute(*x);
       }
-    for (const bool trial : {false, true})
-      {
-        VectorType &x = trial ? u_new : u;
-        for (const auto &p : dirichlet.values(dof_handler,
-                                              trial ? time + dt_current : time))
-          if (locally_owned.is_element(p.first))
-            x(p.first) = p.second;
-        x.compress(VectorOperation::insert);
-      }
+    set_prescribed_values(u, time);
+    set_prescribed_values(u_new, time + dt_current);
     reevaluate_committed_state();
     if (integrator.is_dynamic())
       {
@@ -1465,9 +1485,13 @@ namespace ContactDynamics
         const double dt_try = std::min(dt, end_time - time);
         if (advance(dt_try))
           {
-            // the mesh for the next step (without solving this one again)
-            if (refinement.adapt_to_contact && refinement.passes_per_step == 0 &&
-                step % refinement.interval == 0)
+            // the mesh for the next step (without solving this one again;
+            // `step` is the one just completed)
+            if (refinement.adapt_to_contact &&
+                refinement.passes_per_step == 0 &&
+                adaptation_due(step,
+                               committed_active_nodes,
+                               previous_active_nodes))
               adapt_mesh();
             if (dt < time_step && ++good_since_cut >= 2)
               {

@@ -12,9 +12,10 @@
 //   (the velocity is projected in the mass norm before it is
 //   interpolated) and loses kinetic energy, never gains it; the loss (the
 //   projection loss, measured and written to "measured") is below 2 %
-//   of the kinetic energy for this smooth motion, and is what the
-//   transfer_energy column reports;
+//   of the kinetic energy for this smooth motion;
 // - after it the steps keep the energy again.
+// On two processes (.mpirun=2) the families and hanging nodes lie on the
+// partition boundary too: the same assertions.
 #include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/dofs/dof_tools.h>
@@ -178,17 +179,10 @@ end
                 norm_change(m3.second, m2.second, scale), 0, 1e-12);
     const double loss = (kinetic - simulator.energy().kinetic) / kinetic;
     check_range(d + ": coarsening, kinetic energy lost (fraction)", loss, 0, 0.02);
-    check_range(d + ": transfer_energy is the energy change (of the energy)",
-                std::abs(simulator.energy().transfer - (total() - e2)) / e2,
-                0,
-                1e-12);
-
     const double e3 = total();
     steps(5);
     check_range(d + ": steps after coarsening, energy change",
                 relative(total(), e3), 0, 1e-10);
-    check_range(d + ": balance error after all (of the energy)",
-                std::abs(simulator.energy().error()) / e0, 0, 1e-10);
   }
 } // namespace
 

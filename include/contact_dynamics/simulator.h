@@ -252,8 +252,7 @@ namespace ContactDynamics
     bool
     is_held(const types::global_dof_index i) const
     {
-      const auto *entries = increment_constraints.get_constraint_entries(i);
-      return entries != nullptr && entries->empty();
+      return held_dofs.is_element(i);
     }
 
     /** `x` with the ghost entries this process reads, in `ghost`. */
@@ -298,6 +297,18 @@ namespace ContactDynamics
     RefinementParameters refinement;
     unsigned int         base_level   = 0; // of the initial mesh
     unsigned int         mesh_changes = 0;
+    // active contact nodes at the last and the one before committed steps
+    unsigned int committed_active_nodes = 0, previous_active_nodes = 0;
+    /** Whether the mesh is to be adapted after step `completed` (Interval,
+     * On contact change: `active` against `active_before`). */
+    bool
+    adaptation_due(const unsigned int completed,
+                   const unsigned int active,
+                   const unsigned int active_before) const
+    {
+      return completed % refinement.interval == 0 ||
+             (refinement.on_contact_change && active != active_before);
+    }
 
     MPI_Comm                                          mpi_communicator;
     ParallelParameters                                parallel_parameters;
@@ -311,7 +322,13 @@ namespace ContactDynamics
     AffineConstraints<double>            increment_constraints;
     // hanging nodes only, with their inhomogeneities zero: for the state
     AffineConstraints<double> hanging_constraints;
-    IndexSet                  dirichlet_dofs;
+    bool                      any_hanging_nodes = false; // on any process
+    // Dirichlet dofs, and those plus the unused multipliers
+    IndexSet dirichlet_dofs, held_dofs;
+    /** Prescribed values at t into x, then the hanging nodes that follow
+     * them. */
+    void
+    set_prescribed_values(VectorType &x, const double t);
     std::unique_ptr<SolidMechanics<dim>> mechanics;
 
     // state at t_n, the trial state at t_{n+1}, and work vectors

@@ -382,11 +382,17 @@ namespace ContactDynamics
   SolidMechanics<dim>::setup(const AffineConstraints<double> &constraints)
   {
     jacobian_constraints = &constraints;
+    // (their own constraints: those of the increments have dropped the
+    // held parents, which must get their share for the reactions)
     hanging_rows.clear();
-    for (const auto &line : constraints.get_lines())
-      if (!line.entries.empty() &&
-          dof_handler.locally_owned_dofs().is_element(line.index))
-        hanging_rows.emplace_back(line.index, line.entries);
+    {
+      AffineConstraints<double> hanging;
+      DoFTools::make_hanging_node_constraints(dof_handler, hanging);
+      hanging.close();
+      for (const auto &line : hanging.get_lines())
+        if (dof_handler.locally_owned_dofs().is_element(line.index))
+          hanging_rows.emplace_back(line.index, line.entries);
+    }
     any_hanging_rows = Utilities::MPI::max(unsigned(!hanging_rows.empty()),
                                            dof_handler.get_communicator()) > 0;
     owned_cells.clear();
@@ -703,18 +709,24 @@ namespace ContactDynamics
         linear_stiffness.vmult(product, owned(u, scratch[0]));
         residual_full += product;
       }
-    // the rows of hanging nodes go to the rows they follow (C^T r);
-    // homogeneous constraints without entries: the rows are dropped
-    residual = residual_full;
+    // the rows of hanging nodes go to the rows they follow (C^T r), held
+    // ones too (their reactions); then the rows of the held and hanging
+    // degrees of freedom are dropped
     if (any_hanging_rows)
       {
+        residual = residual_full;
         for (const auto &row : hanging_rows)
-          for (const auto &entry : row.second)
-            residual.add(std::vector<types::global_dof_index>{entry.first},
-                         std::vector<double>{entry.second *
-                                             residual_full(row.first)});
-        residual.compress(VectorOperation::add);
+          {
+            for (const auto &entry : row.second)
+              residual_full.add(
+                std::vector<types::global_dof_index>{entry.first},
+                std::vector<double>{entry.second * residual(row.first)});
+            residual_full.add(std::vector<types::global_dof_index>{row.first},
+                              std::vector<double>{-residual(row.first)});
+          }
+        residual_full.compress(VectorOperation::add);
       }
+    residual = residual_full;
     constraints.set_zero(residual);
   }
 

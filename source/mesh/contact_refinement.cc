@@ -41,6 +41,11 @@ namespace ContactDynamics
                       default_text(d.interval),
                       Patterns::Integer(1, 1000000),
                       "Adapt the mesh after every this many time steps.");
+    prm.declare_entry("On contact change",
+                      default_text(d.on_contact_change),
+                      Patterns::Bool(),
+                      "Also adapt after a step (between the Intervals) in "
+                      "which the number of active contact nodes changed.");
     prm.declare_entry(
       "Maximum levels",
       default_text(d.maximum_levels),
@@ -89,6 +94,7 @@ namespace ContactDynamics
   {
     adapt_to_contact = prm.get_bool("Adapt to contact");
     interval         = prm.get_integer("Interval");
+    on_contact_change = prm.get_bool("On contact change");
     maximum_levels   = prm.get_integer("Maximum levels");
     maximum_cells    = prm.get_integer("Maximum cells");
     buffer_cells     = prm.get_double("Buffer cells");
@@ -226,18 +232,23 @@ namespace ContactDynamics
                       0. :
                       1. / mass.diag_element(i);
     diagonal.compress(VectorOperation::insert);
+    // rows without mass (multipliers) take no part
     r = x;
     constraints.set_zero(r);
+    for (const auto i : owned)
+      if (diagonal(i) == 0)
+        r(i) = 0;
+    r.compress(VectorOperation::insert);
     x                   = 0;
     const double b_norm = r.l2_norm();
+    unsigned int it     = 0;
     if (b_norm > 0)
       {
         z = r;
         z.scale(diagonal);
         p          = z;
         double rho = r * z;
-        for (unsigned int it = 0; it < 10000 && r.l2_norm() > 1e-14 * b_norm;
-             ++it)
+        for (; it < 10000 && r.l2_norm() > 1e-14 * b_norm; ++it)
           {
             y = p;
             constraints.distribute(y);
@@ -252,6 +263,12 @@ namespace ContactDynamics
             p.sadd(rho_new / rho, 1., z);
             rho = rho_new;
           }
+        AssertThrow(r.l2_norm() <= 1e-12 * b_norm,
+                    ExcMessage("The mass solve of a mesh transfer did not "
+                               "converge (relative residual " +
+                               std::to_string(r.l2_norm() / b_norm) +
+                               " after " + std::to_string(it) +
+                               " CG iterations)."));
       }
     constraints.distribute(x);
   }

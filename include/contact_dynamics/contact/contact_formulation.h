@@ -290,6 +290,13 @@ namespace ContactDynamics
       return 0;
     }
 
+    /** Active secondary nodes of all processes at the last assembly. */
+    virtual unsigned int
+    n_active_nodes() const
+    {
+      return 0;
+    }
+
     /**
      * Stabilization 'velocity update': the normal contact work of the last
      * committed step, which the velocities are to return (0: nothing to

@@ -125,6 +125,12 @@ namespace ContactDynamics
       return n;
     }
 
+    unsigned int
+    n_active_nodes() const override
+    {
+      return n_active;
+    }
+
     void
     assemble(const TrialState                &state,
              const AffineConstraints<double> &constraints,

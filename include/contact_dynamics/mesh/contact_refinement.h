@@ -31,6 +31,7 @@ namespace ContactDynamics
   {
     bool         adapt_to_contact = false;
     unsigned int interval         = 1;
+    bool         on_contact_change = true;
     unsigned int maximum_levels   = 2;
     unsigned int maximum_cells    = 1000000;
     double       buffer_cells     = 2;
@@ -69,10 +70,10 @@ namespace ContactDynamics
    * the present mesh that the coarsened families represent exactly (their
    * removed vertices interpolated from the parents' vertices), keeping the
    * values of the `fixed` degrees of freedom and the `hanging` constraints
-   * of the present mesh. Constant and linear fields are in that space: the
-   * momentum and the angular momentum do not change, and the kinetic
-   * energy cannot grow; the interpolation to the coarser mesh is then
-   * exact. Returns false (v unchanged) if no family is coarsened.
+   * of the present mesh. Constant and linear fields are in that space: on
+   * a free body the momentum and the angular momentum do not change, and
+   * with no fixed values (or fixed values of zero) the kinetic energy
+   * cannot grow; the interpolation to the coarser mesh is then exact. Returns false (v unchanged) if no family is coarsened.
    * Collective.
    */
   template <int dim>
