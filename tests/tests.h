@@ -210,10 +210,13 @@ read_test_parameters(const std::string        &filename,
                      const std::string        &text,
                      dealii::ParameterHandler &prm)
 {
-  {
-    std::ofstream f(filename);
-    f << text;
-  }
+  // under mpirun: one process writes, all read once it is complete
+  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    {
+      std::ofstream f(filename);
+      f << text;
+    }
+  MPI_Barrier(MPI_COMM_WORLD);
   ContactDynamics::read_parameters(filename, prm);
 }
 
