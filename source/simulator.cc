@@ -641,16 +641,7 @@ namespace ContactDynamics
         acceleration_constraints.distribute(a);
       }
     // reactions at t = 0 for the trapezoidal external work
-    mechanics->assemble(ghosted(u, u_ghost),
-                        ghosted(v, v_ghost),
-                        a,
-                        integrator.is_dynamic() ? 1. : 0.,
-                        0.,
-                        increment_constraints,
-                        false,
-                        residual,
-                        jacobian,
-                        residual_full_old);
+    assemble_committed_reactions();
 
     // the inputs were finite (check_initial_inputs): what is not finite
     // now overflowed (linfty: the l2 norm of 1e200 overflows)
@@ -738,7 +729,8 @@ namespace ContactDynamics
       for (const auto &c : contact->statistics_columns())
         columns.push_back(c);
     if (refinement.adapt_to_contact)
-      for (const auto *c : {"cells", "unknowns", "mesh_changes", "transfer_energy"})
+      for (const auto *c :
+           {"cells", "unknowns", "mesh_changes", "transfer_energy"})
         columns.emplace_back(c);
     check_collectively(mpi_communicator, [&]() {
       if (is_root(mpi_communicator))
@@ -1006,7 +998,7 @@ namespace ContactDynamics
     NewtonSolver::Result result;
     // of the passes before, on the meshes before
     unsigned int earlier_iterations = 0, earlier_linear_iterations = 0;
-    bool         adapted            = false;
+    bool         adapted = false;
     for (unsigned int pass = 0;; ++pass)
       {
         {
@@ -1208,10 +1200,15 @@ namespace ContactDynamics
       TimerOutput::Scope t(*timer, "mesh adaptation");
       // u_ghost: the trial state of the last assembly
       const std::vector<Point<dim>> zone =
-        contact ? contact->contact_zone(u_ghost,
-                                        refinement.lookahead_steps * dt_current) :
-                  std::vector<Point<dim>>();
-      mark_cells_near_contact(dof_handler, u_ghost, zone, refinement, base_level);
+        contact ?
+          contact->contact_zone(u_ghost,
+                                refinement.lookahead_steps * dt_current) :
+          std::vector<Point<dim>>();
+      mark_cells_near_contact(dof_handler,
+                              u_ghost,
+                              zone,
+                              refinement,
+                              base_level);
     }
     return refine_and_transfer();
   }
@@ -1223,7 +1220,8 @@ namespace ContactDynamics
     auto *tria = dynamic_cast<parallel::distributed::Triangulation<dim> *>(
       triangulation.get());
     AssertThrow(tria != nullptr,
-                ExcMessage("Mesh refinement needs Parallel/Mesh = distributed."));
+                ExcMessage(
+                  "Mesh refinement needs Parallel/Mesh = distributed."));
     TimerOutput::Scope t(*timer, "mesh adaptation");
     tria->prepare_coarsening_and_refinement();
     if (!any_cell_flagged(*tria, mpi_communicator))
@@ -1237,9 +1235,10 @@ namespace ContactDynamics
       std::vector<bool> extra(fe->n_components(), true);
       for (unsigned int d = 0; d < dim; ++d)
         extra[d] = false;
-      IndexSet fixed = union_over_processes(
-        DoFTools::extract_dofs(dof_handler, ComponentMask(extra)),
-        mpi_communicator);
+      IndexSet fixed =
+        union_over_processes(DoFTools::extract_dofs(dof_handler,
+                                                    ComponentMask(extra)),
+                             mpi_communicator);
       fixed.add_indices(dirichlet_dofs);
       project_before_coarsening(dof_handler,
                                 mechanics->mass_matrix(),
@@ -1247,8 +1246,8 @@ namespace ContactDynamics
                                 fixed,
                                 v);
     }
-    const auto   cells_before   = tria->n_global_active_cells();
-    const auto   unknowns_before = dof_handler.n_dofs();
+    const auto cells_before    = tria->n_global_active_cells();
+    const auto unknowns_before = dof_handler.n_dofs();
     // the committed state and the trial state of the step
     const std::array<VectorType *, 4> state{{&u, &v, &a, &u_new}};
     std::array<VectorType, 4>         old;
@@ -1267,7 +1266,7 @@ namespace ContactDynamics
     for (VectorType *x : out)
       {
         // the unused multipliers (interpolated next to surface nodes)
-        for (const auto i : held_dofs & locally_owned)
+        for (const auto i : held_dofs &locally_owned)
           if (!dirichlet_dofs.is_element(i))
             (*x)(i) = 0;
         x->compress(VectorOperation::insert);
@@ -1294,7 +1293,7 @@ namespace ContactDynamics
 
     energies.kinetic =
       integrator.is_dynamic() ? mechanics->kinetic_energy(v) : 0.;
-    energies.elastic = mechanics->elastic_energy(ghosted(u, u_ghost));
+    energies.elastic          = mechanics->elastic_energy(ghosted(u, u_ghost));
     const double energy_after = energies.kinetic + energies.elastic;
     energies.transfer += energy_after - energy_before;
     ++mesh_changes;
@@ -1309,10 +1308,8 @@ namespace ContactDynamics
 
   template <int dim>
   void
-  Simulator<dim>::reevaluate_committed_state()
+  Simulator<dim>::assemble_committed_reactions()
   {
-    // the reactions at the committed state, for the trapezoidal external
-    // work of the next step
     mechanics->assemble(ghosted(u, u_ghost),
                         ghosted(v, v_ghost),
                         a,
@@ -1323,6 +1320,13 @@ namespace ContactDynamics
                         residual,
                         jacobian,
                         residual_full_old);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::reevaluate_committed_state()
+  {
+    assemble_committed_reactions();
     if (contact)
       {
         // the node states, forces and face memory of the committed state,

@@ -13,6 +13,7 @@
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
 
+#include "patch_test_checks.h"
 #include "tests.h"
 
 using namespace dealii;
@@ -107,49 +108,7 @@ end
                Utilities::MPI::sum(hanging, MPI_COMM_WORLD) > 0);
     advance_to(2);
 
-    const auto *contact =
-      dynamic_cast<const ContactDynamics::SurfaceContact<2> *>(
-        simulator.get_contact());
-    const double exact = 1000;
-    double       worst = 0, worst_gap = 0;
-    unsigned int n_active = 0;
-    for (const auto &node : contact->node_states(0))
-      {
-        worst = std::max(worst, std::abs(node.pressure - exact));
-        if (node.active)
-          {
-            ++n_active;
-            worst_gap = std::max(worst_gap, std::abs(node.normalized_gap()));
-          }
-      }
-    const auto stats  = contact_statistics(*contact);
-    const auto top    = simulator.reaction_force("upper_top");
-    const auto bottom = simulator.reaction_force("lower_bottom");
-    deallog << formulation << ": secondary nodes "
-            << contact->node_states(0).size() << ", active " << n_active
-            << std::endl;
-    check_close(formulation + ": contact force on the upper block + reaction "
-                              "at its top",
-                (stats.at("contact_force_y") + top[1]) / exact,
-                0.,
-                1e-9);
-    check_close(formulation + ": reactions at top and bottom cancel",
-                (top[1] + bottom[1]) / exact,
-                0.,
-                1e-9);
-    check_close(formulation + ": tangential contact force",
-                stats.at("contact_force_x") / exact,
-                0.,
-                1e-9);
-    check_close(formulation + ": gap at active nodes / delta",
-                worst_gap / 1e-3,
-                0.,
-                1e-9);
-    check_close(formulation + ": total load / (E delta)",
-                -top[1] / exact,
-                1.,
-                formulation == "mortar" ? 1e-9 : 0.05);
-    return worst / exact;
+    return check_patch_test(formulation, simulator);
   }
 } // namespace
 

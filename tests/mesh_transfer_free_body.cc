@@ -36,15 +36,15 @@ namespace
   std::pair<Tensor<1, dim>, Tensor<1, 3>>
   momenta(const ContactDynamics::Simulator<dim> &simulator)
   {
-    const auto &dof_handler = simulator.get_dof_handler();
-    QGauss<dim> quadrature(3);
-    FEValues<dim> fe_values(dof_handler.get_fe(),
+    const auto                      &dof_handler = simulator.get_dof_handler();
+    QGauss<dim>                      quadrature(3);
+    FEValues<dim>                    fe_values(dof_handler.get_fe(),
                             quadrature,
                             update_values | update_quadrature_points |
                               update_JxW_values);
     const FEValuesExtractors::Vector velocity(0);
     std::vector<Tensor<1, dim>>      v(quadrature.size());
-    IndexSet relevant;
+    IndexSet                         relevant;
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
     ContactDynamics::VectorType ghosted(dof_handler.locally_owned_dofs(),
                                         relevant,
@@ -87,10 +87,11 @@ namespace
 subsection Scene
   set Scene = block
   subsection Block
-)" + (dim == 2 ? "    set Origin = 0, 0\n    set Size = 1, 0.5\n"
-                 "    set Subdivisions = 8, 4\n" :
-                 "    set Origin = 0, 0, 0\n    set Size = 1, 0.5, 0.5\n"
-                 "    set Subdivisions = 4, 2, 2\n") +
+)" +
+        (dim == 2 ? "    set Origin = 0, 0\n    set Size = 1, 0.5\n"
+                    "    set Subdivisions = 8, 4\n" :
+                    "    set Origin = 0, 0, 0\n    set Size = 1, 0.5, 0.5\n"
+                    "    set Subdivisions = 4, 2, 2\n") +
         R"(  end
 end
 subsection Body body
@@ -151,18 +152,29 @@ end
         cell->set_refine_flag();
     check_true(d + ": refined", simulator.refine_and_transfer());
     const auto m1 = momenta(simulator);
-    check_range(d + ": refinement, energy change", relative(total(), e0), 0, 1e-12);
+    check_range(d + ": refinement, energy change",
+                relative(total(), e0),
+                0,
+                1e-12);
     check_range(d + ": refinement, momentum change",
-                norm_change(m1.first, m0.first, scale), 0, 1e-12);
+                norm_change(m1.first, m0.first, scale),
+                0,
+                1e-12);
     check_range(d + ": refinement, angular momentum change",
-                norm_change(m1.second, m0.second, scale), 0, 1e-12);
+                norm_change(m1.second, m0.second, scale),
+                0,
+                1e-12);
 
     steps(5);
     const auto m2 = momenta(simulator);
     check_range(d + ": steps with hanging nodes, energy change",
-                relative(total(), e0), 0, 1e-10);
+                relative(total(), e0),
+                0,
+                1e-10);
     check_range(d + ": steps with hanging nodes, momentum change",
-                norm_change(m2.first, m0.first, scale), 0, 1e-12);
+                norm_change(m2.first, m0.first, scale),
+                0,
+                1e-12);
 
     const double kinetic = simulator.energy().kinetic;
     const double e2      = total();
@@ -174,15 +186,24 @@ end
                tria.n_global_active_cells() == (dim == 2 ? 32u : 16u));
     const auto m3 = momenta(simulator);
     check_range(d + ": coarsening, momentum change",
-                norm_change(m3.first, m2.first, scale), 0, 1e-12);
+                norm_change(m3.first, m2.first, scale),
+                0,
+                1e-12);
     check_range(d + ": coarsening, angular momentum change",
-                norm_change(m3.second, m2.second, scale), 0, 1e-12);
+                norm_change(m3.second, m2.second, scale),
+                0,
+                1e-12);
     const double loss = (kinetic - simulator.energy().kinetic) / kinetic;
-    check_range(d + ": coarsening, kinetic energy lost (fraction)", loss, 0, 0.02);
+    check_range(d + ": coarsening, kinetic energy lost (fraction)",
+                loss,
+                0,
+                0.02);
     const double e3 = total();
     steps(5);
     check_range(d + ": steps after coarsening, energy change",
-                relative(total(), e3), 0, 1e-10);
+                relative(total(), e3),
+                0,
+                1e-10);
   }
 } // namespace
 

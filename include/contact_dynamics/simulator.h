@@ -210,6 +210,11 @@ namespace ContactDynamics
      * refine_and_transfer(). */
     bool
     adapt_mesh();
+    /** The bulk forces of the committed state u, v, a into
+     * residual_full_old: the reactions for the trapezoidal external work of
+     * the next step. */
+    void
+    assemble_committed_reactions();
     /** The bulk reactions of the committed state and, with contact, its
      * history on a new mesh. */
     void
@@ -291,9 +296,9 @@ namespace ContactDynamics
     DirichletConditions<dim>    dirichlet;
     TimeIntegrator              integrator;
     // the Jacobian must outlive the factorization that refers to it
-    MatrixType       jacobian;
-    NewtonSolver     newton;
-    OutputParameters output_parameters;
+    MatrixType           jacobian;
+    NewtonSolver         newton;
+    OutputParameters     output_parameters;
     RefinementParameters refinement;
     unsigned int         base_level   = 0; // of the initial mesh
     unsigned int         mesh_changes = 0;
@@ -318,8 +323,8 @@ namespace ContactDynamics
     DoFHandler<dim>                                   dof_handler;
     IndexSet                                          locally_owned;
     // owned, neighbours of owned cells, and every contact surface dof
-    IndexSet                             locally_relevant;
-    AffineConstraints<double>            increment_constraints;
+    IndexSet                  locally_relevant;
+    AffineConstraints<double> increment_constraints;
     // hanging nodes only, with their inhomogeneities zero: for the state
     AffineConstraints<double> hanging_constraints;
     bool                      any_hanging_nodes = false; // on any process

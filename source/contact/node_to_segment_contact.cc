@@ -106,10 +106,12 @@ namespace ContactDynamics
             const auto  quarter = [&](const auto &x) {
               return cross_product_3d(x(3) - x(0), x(2) - x(1)).norm() / 8;
             };
-            current += quarter(
-              [&](const unsigned int a) { return surface.position(f[a], u); });
-            reference += quarter(
-              [&](const unsigned int a) { return surface.reference[f[a]]; });
+            current += quarter([&](const unsigned int a) {
+              return surface.position(f[a], u);
+            });
+            reference += quarter([&](const unsigned int a) {
+              return surface.reference[f[a]];
+            });
           }
         return current > 0 ? reference / current : 1.;
       }

@@ -635,7 +635,7 @@ namespace ContactDynamics
     if (committed_is_next)
       committed_u = u;
     committed_is_next = false;
-    bool rebuild = false;
+    bool rebuild      = false;
     for (auto &pair : pairs)
       {
         pair.candidates = compute_candidates(pair, u, 0.5);

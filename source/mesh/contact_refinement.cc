@@ -2,14 +2,13 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
 
 #include <deal.II/grid/tria.h>
 
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
-
-#include <deal.II/dofs/dof_tools.h>
 
 #include <deal.II/numerics/rtree.h>
 
@@ -92,15 +91,15 @@ namespace ContactDynamics
   RefinementParameters::parse_parameters(ParameterHandler  &prm,
                                          const unsigned int dim)
   {
-    adapt_to_contact = prm.get_bool("Adapt to contact");
-    interval         = prm.get_integer("Interval");
+    adapt_to_contact  = prm.get_bool("Adapt to contact");
+    interval          = prm.get_integer("Interval");
     on_contact_change = prm.get_bool("On contact change");
-    maximum_levels   = prm.get_integer("Maximum levels");
-    maximum_cells    = prm.get_integer("Maximum cells");
-    buffer_cells     = prm.get_double("Buffer cells");
-    lookahead_steps  = prm.get_double("Lookahead steps");
-    passes_per_step  = prm.get_integer("Passes per step");
-    coarsen          = prm.get_bool("Coarsen");
+    maximum_levels    = prm.get_integer("Maximum levels");
+    maximum_cells     = prm.get_integer("Maximum cells");
+    buffer_cells      = prm.get_double("Buffer cells");
+    lookahead_steps   = prm.get_double("Lookahead steps");
+    passes_per_step   = prm.get_integer("Passes per step");
+    coarsen           = prm.get_bool("Coarsen");
     AssertThrow(!adapt_to_contact || dim == 2,
                 ExcMessage(
                   "Mesh refinement/Adapt to contact = true is not available "
@@ -118,16 +117,17 @@ namespace ContactDynamics
                           const RefinementParameters    &parameters,
                           const unsigned int             base_level)
   {
-    const MPI_Comm comm     = dof_handler.get_communicator();
-    const auto     tree     = pack_rtree(contact_points);
-    const auto    &tria     = dof_handler.get_triangulation();
-    const double   buffer   = parameters.buffer_cells;
-    const unsigned int top  = base_level + parameters.maximum_levels;
-    const unsigned int kids = 1u << dim;
+    const MPI_Comm     comm   = dof_handler.get_communicator();
+    const auto         tree   = pack_rtree(contact_points);
+    const auto        &tria   = dof_handler.get_triangulation();
+    const double       buffer = parameters.buffer_cells;
+    const unsigned int top    = base_level + parameters.maximum_levels;
+    const unsigned int kids   = 1u << dim;
 
     // distance of each owned cell's current position to the contact zone,
     // in units of its diameter
-    std::vector<std::pair<double, typename Triangulation<dim>::active_cell_iterator>>
+    std::vector<
+      std::pair<double, typename Triangulation<dim>::active_cell_iterator>>
       refine;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -135,7 +135,7 @@ namespace ContactDynamics
           continue;
         cell->clear_refine_flag();
         cell->clear_coarsen_flag();
-        Point<dim>                      center;
+        Point<dim>                       center;
         std::array<Point<dim>, 1 << dim> x;
         for (const unsigned int v : cell->vertex_indices())
           {
@@ -155,8 +155,8 @@ namespace ContactDynamics
                        std::back_inserter(nearest));
             distance = std::max(0., center.distance(nearest[0]) - radius);
           }
-        const double diameter = 2 * radius;
-        const unsigned int level = cell->level();
+        const double       diameter = 2 * radius;
+        const unsigned int level    = cell->level();
         if (distance < buffer * diameter && level < top)
           refine.emplace_back(distance / diameter,
                               typename Triangulation<dim>::active_cell_iterator(
@@ -175,14 +175,15 @@ namespace ContactDynamics
         n += r.first <= threshold;
       return Utilities::MPI::sum(n, comm);
     };
-    const double room = (double(parameters.maximum_cells) - n_cells) / (kids - 1);
+    const double room =
+      (double(parameters.maximum_cells) - n_cells) / (kids - 1);
     double threshold = buffer;
     if (n_refine(threshold) > room)
       {
         double low = -1, high = buffer;
         for (unsigned int i = 0; i < 50; ++i)
           {
-            const double mid = 0.5 * (low + high);
+            const double mid                    = 0.5 * (low + high);
             (n_refine(mid) > room ? high : low) = mid;
           }
         threshold = low;
@@ -228,9 +229,10 @@ namespace ContactDynamics
     const IndexSet owned = x.locally_owned_elements();
     VectorType     diagonal(x), r(x), p(x), q(x), z(x), y(x);
     for (const auto i : owned)
-      diagonal(i) = constraints.is_constrained(i) || !(mass.diag_element(i) > 0) ?
-                      0. :
-                      1. / mass.diag_element(i);
+      diagonal(i) =
+        constraints.is_constrained(i) || !(mass.diag_element(i) > 0) ?
+          0. :
+          1. / mass.diag_element(i);
     diagonal.compress(VectorOperation::insert);
     // rows without mass (multipliers) take no part
     r = x;
@@ -327,8 +329,8 @@ namespace ContactDynamics
     if (Utilities::MPI::sum(n_families, comm) == 0)
       return false;
     for (const auto &line : hanging.get_lines())
-      if (relevant.is_element(line.index) && !family.is_constrained(line.index) &&
-          !fixed.is_element(line.index))
+      if (relevant.is_element(line.index) &&
+          !family.is_constrained(line.index) && !fixed.is_element(line.index))
         {
           family.add_line(line.index);
           family.add_entries(line.index, line.entries);
@@ -341,7 +343,7 @@ namespace ContactDynamics
         with_fixed.add_line(line.index);
         with_fixed.add_entries(line.index, line.entries);
       }
-    for (const auto i : fixed & relevant)
+    for (const auto i : fixed &relevant)
       if (!with_fixed.is_constrained(i))
         with_fixed.add_line(i);
     family.close();
@@ -369,8 +371,7 @@ namespace ContactDynamics
 
   template <int dim>
   bool
-  any_cell_flagged(const Triangulation<dim> &triangulation,
-                   const MPI_Comm            comm)
+  any_cell_flagged(const Triangulation<dim> &triangulation, const MPI_Comm comm)
   {
     unsigned int flagged = 0;
     for (const auto &cell : triangulation.active_cell_iterators())

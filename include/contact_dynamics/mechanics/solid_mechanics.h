@@ -183,9 +183,9 @@ namespace ContactDynamics
     std::vector<
       std::pair<types::global_dof_index,
                 std::vector<std::pair<types::global_dof_index, double>>>>
-         hanging_rows;
-    bool any_hanging_rows = false;
-    std::vector<CellIterator>        owned_cells, nonlinear_cells;
+                              hanging_rows;
+    bool                      any_hanging_rows = false;
+    std::vector<CellIterator> owned_cells, nonlinear_cells;
     // their shape gradients and JxW at the quadrature points, cell by cell
     std::vector<Tensor<1, dim>> nonlinear_gradients;
     std::vector<double>         nonlinear_JxW;

@@ -29,15 +29,15 @@ namespace ContactDynamics
   /** The `Mesh refinement` subsection. */
   struct RefinementParameters
   {
-    bool         adapt_to_contact = false;
-    unsigned int interval         = 1;
+    bool         adapt_to_contact  = false;
+    unsigned int interval          = 1;
     bool         on_contact_change = true;
-    unsigned int maximum_levels   = 2;
-    unsigned int maximum_cells    = 1000000;
-    double       buffer_cells     = 2;
-    double       lookahead_steps  = 2;
-    unsigned int passes_per_step  = 1;
-    bool         coarsen          = true;
+    unsigned int maximum_levels    = 2;
+    unsigned int maximum_cells     = 1000000;
+    double       buffer_cells      = 2;
+    double       lookahead_steps   = 2;
+    unsigned int passes_per_step   = 1;
+    bool         coarsen           = true;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -58,11 +58,11 @@ namespace ContactDynamics
    */
   template <int dim>
   void
-  mark_cells_near_contact(const DoFHandler<dim, dim>     &dof_handler,
-                          const VectorType               &u,
-                          const std::vector<Point<dim>>  &contact_points,
-                          const RefinementParameters     &parameters,
-                          const unsigned int              base_level);
+  mark_cells_near_contact(const DoFHandler<dim, dim>    &dof_handler,
+                          const VectorType              &u,
+                          const std::vector<Point<dim>> &contact_points,
+                          const RefinementParameters    &parameters,
+                          const unsigned int             base_level);
 
   /**
    * Before the flagged cells are coarsened: replaces `v` (owned) by its
@@ -73,16 +73,16 @@ namespace ContactDynamics
    * of the present mesh. Constant and linear fields are in that space: on
    * a free body the momentum and the angular momentum do not change, and
    * with no fixed values (or fixed values of zero) the kinetic energy
-   * cannot grow; the interpolation to the coarser mesh is then exact. Returns false (v unchanged) if no family is coarsened.
-   * Collective.
+   * cannot grow; the interpolation to the coarser mesh is then exact. Returns
+   * false (v unchanged) if no family is coarsened. Collective.
    */
   template <int dim>
   bool
-  project_before_coarsening(const DoFHandler<dim, dim>       &dof_handler,
+  project_before_coarsening(const DoFHandler<dim, dim>           &dof_handler,
                             const TrilinosWrappers::SparseMatrix &mass,
-                            const AffineConstraints<double>  &hanging,
-                            const IndexSet                   &fixed,
-                            VectorType                       &v);
+                            const AffineConstraints<double>      &hanging,
+                            const IndexSet                       &fixed,
+                            VectorType                           &v);
 
   /**
    * y <- C^T y for homogeneous constraints C: the rows of constrained
