@@ -30,48 +30,7 @@ namespace
   {
     ParameterHandler prm;
     read_test_parameters("patch.prm",
-                         std::string(R"(
-subsection Scene
-  set Scene = patch test
-end
-subsection Body upper
-  set Young's modulus = 1e6
-  set Poisson's ratio = 0
-end
-subsection Body lower
-  set Young's modulus = 1e6
-  set Poisson's ratio = 0
-end
-subsection Boundary conditions
-  set Dirichlet = lower_bottom: xy: 0; upper_top: y: -1e-3*t)") +
-                           (formulation == "mortar" ? "; upper_left: x: 0" :
-                                                      "") +
-                           R"(
-end
-subsection Time integration
-  set Scheme = quasi-static
-  set Time step = 1
-  set End time = 1
-end
-subsection Nonlinear solver
-  set Absolute tolerance = 1e-9
-end
-subsection Contact
-  set Formulation = )" + formulation +
-                           R"(
-  set Pairs = upper_bottom: lower_top
-  subsection Mortar
-    set c_n = 1e6
-  end
-  subsection Node to segment
-    set c_n = 1e6
-  end
-end
-subsection Output
-  set Output directory = output_patch
-  set VTU interval = 0
-end
-)",
+                         patch_test_parameters(formulation, "-1e-3*t", "1"),
                          prm);
     std::ostringstream            screen;
     ContactDynamics::Simulator<2> simulator(prm, screen);

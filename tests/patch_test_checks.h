@@ -1,8 +1,8 @@
-// The checks of the 2-D contact patch test (contact_patch_test and
-// contact_patch_test_refined): after the load step, the force balance
-// between the contact, the top and the bottom, no tangential force, no gap
-// at active nodes and the load E delta; returns the largest nodal pressure
-// error relative to E delta = 1000.
+// The parameters and the checks of the 2-D contact patch test
+// (contact_patch_test and contact_patch_test_refined): after the load step, the
+// force balance between the contact, the top and the bottom, no tangential
+// force, no gap at active nodes and the load E delta; returns the largest nodal
+// pressure error relative to E delta = 1000.
 #ifndef contact_dynamics_tests_patch_test_checks_h
 #define contact_dynamics_tests_patch_test_checks_h
 
@@ -59,6 +59,58 @@ check_patch_test(const std::string                   &formulation,
               1.,
               formulation == "mortar" ? 1e-9 : 0.05);
   return worst / exact;
+}
+
+// The 2-D patch test's parameters (contact_patch_test.cc says why mortar
+// holds the upper block's left side): `load` is the top's displacement as a
+// function of t, `end_time` the end, `extra` more subsections.
+inline std::string
+patch_test_parameters(const std::string &formulation,
+                      const std::string &load,
+                      const std::string &end_time,
+                      const std::string &extra = "")
+{
+  return std::string(R"(
+subsection Scene
+  set Scene = patch test
+end
+subsection Body upper
+  set Young's modulus = 1e6
+  set Poisson's ratio = 0
+end
+subsection Body lower
+  set Young's modulus = 1e6
+  set Poisson's ratio = 0
+end
+subsection Boundary conditions
+  set Dirichlet = lower_bottom: xy: 0; upper_top: y: )") +
+         load + (formulation == "mortar" ? "; upper_left: x: 0" : "") + R"(
+end
+subsection Time integration
+  set Scheme = quasi-static
+  set Time step = 1
+  set End time = )" +
+         end_time + R"(
+end
+subsection Nonlinear solver
+  set Absolute tolerance = 1e-9
+end
+subsection Contact
+  set Formulation = )" +
+         formulation + R"(
+  set Pairs = upper_bottom: lower_top
+  subsection Mortar
+    set c_n = 1e6
+  end
+  subsection Node to segment
+    set c_n = 1e6
+  end
+end
+subsection Output
+  set Output directory = output_patch
+  set VTU interval = 0
+end
+)" + extra;
 }
 
 #endif
