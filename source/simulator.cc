@@ -1204,11 +1204,18 @@ namespace ContactDynamics
           contact->contact_zone(u_ghost,
                                 refinement.lookahead_steps * dt_current) :
           std::vector<Point<dim>>();
-      mark_cells_near_contact(dof_handler,
-                              u_ghost,
-                              zone,
-                              refinement,
-                              base_level);
+      const unsigned int dropped = mark_cells_near_contact(dof_handler,
+                                                           u_ghost,
+                                                           zone,
+                                                           refinement,
+                                                           base_level);
+      if (dropped > 0 && !cell_limit_reported)
+        pcout << "  Mesh refinement/Maximum cells = "
+              << refinement.maximum_cells << " reached at t = " << time << ": "
+              << dropped
+              << " cells near the contact are not refined (reported once)"
+              << std::endl;
+      cell_limit_reported = cell_limit_reported || dropped > 0;
     }
     return refine_and_transfer();
   }

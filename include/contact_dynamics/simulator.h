@@ -300,8 +300,9 @@ namespace ContactDynamics
     NewtonSolver         newton;
     OutputParameters     output_parameters;
     RefinementParameters refinement;
-    unsigned int         base_level   = 0; // of the initial mesh
-    unsigned int         mesh_changes = 0;
+    unsigned int         base_level          = 0; // of the initial mesh
+    unsigned int         mesh_changes        = 0;
+    bool                 cell_limit_reported = false;
     // active contact nodes at the last and the one before committed steps
     unsigned int committed_active_nodes = 0, previous_active_nodes = 0;
     /** Whether the mesh is to be adapted after step `completed` (Interval,

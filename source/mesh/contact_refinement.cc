@@ -110,7 +110,7 @@ namespace ContactDynamics
   }
 
   template <int dim>
-  void
+  unsigned int
   mark_cells_near_contact(const DoFHandler<dim, dim>    &dof_handler,
                           const VectorType              &u,
                           const std::vector<Point<dim>> &contact_points,
@@ -188,9 +188,13 @@ namespace ContactDynamics
           }
         threshold = low;
       }
+    unsigned int dropped = 0;
     for (const auto &r : refine)
       if (r.first <= threshold)
         r.second->set_refine_flag();
+      else
+        ++dropped;
+    return Utilities::MPI::sum(dropped, comm);
   }
 
   namespace
@@ -381,13 +385,13 @@ namespace ContactDynamics
     return Utilities::MPI::sum(flagged, comm) > 0;
   }
 
-  template void
+  template unsigned int
   mark_cells_near_contact<2>(const DoFHandler<2, 2> &,
                              const VectorType &,
                              const std::vector<Point<2>> &,
                              const RefinementParameters &,
                              const unsigned int);
-  template void
+  template unsigned int
   mark_cells_near_contact<3>(const DoFHandler<3, 3> &,
                              const VectorType &,
                              const std::vector<Point<3>> &,

@@ -54,10 +54,10 @@ namespace ContactDynamics
    * maximum_levels`; one farther than (buffer_cells + 1) diameters of its
    * parent is coarsened, down to `base_level`. Refinements that would make
    * more than `maximum_cells` cells are dropped, the farthest first.
-   * Collective.
+   * Returns the number of refinements dropped (collective).
    */
   template <int dim>
-  void
+  unsigned int
   mark_cells_near_contact(const DoFHandler<dim, dim>    &dof_handler,
                           const VectorType              &u,
                           const std::vector<Point<dim>> &contact_points,
