@@ -113,4 +113,23 @@ end
 )" + extra;
 }
 
+// Runs `run` for mortar (exact: 1e-8) and NTS (its one-pass error) and
+// reports the errors.
+template <typename Run>
+void
+report_patch_tests(const Run &run)
+{
+  const double mortar = run("mortar");
+  check_close("mortar: max |pressure - E delta| / (E delta)", mortar, 0., 1e-8);
+  // informational (numdiff compares values below 1e-6 as equal)
+  dealii::deallog << "mortar: measured relative pressure error: " << mortar
+                  << std::endl;
+  const double nts = run("nts");
+  dealii::deallog << std::setprecision(3)
+                  << "nts: measured relative pressure error: " << nts
+                  << std::endl;
+  check_true("nts: the error is that of one-pass NTS (between 1 % and 50 %)",
+             nts > 0.01 && nts < 0.5);
+}
+
 #endif

@@ -13,6 +13,7 @@
 #include <deal.II/numerics/rtree.h>
 
 #include <contact_dynamics/mesh/contact_refinement.h>
+#include <contact_dynamics/parallel.h>
 #include <contact_dynamics/parameters.h>
 
 #include <algorithm>
@@ -269,12 +270,13 @@ namespace ContactDynamics
             p.sadd(rho_new / rho, 1., z);
             rho = rho_new;
           }
+        // (the norms are global: every process throws, with one message)
         AssertThrow(r.l2_norm() <= 1e-12 * b_norm,
-                    ExcMessage("The mass solve of a mesh transfer did not "
-                               "converge (relative residual " +
-                               std::to_string(r.l2_norm() / b_norm) +
-                               " after " + std::to_string(it) +
-                               " CG iterations)."));
+                    ExcCollective("The mass solve of a mesh transfer did not "
+                                  "converge (relative residual " +
+                                  std::to_string(r.l2_norm() / b_norm) +
+                                  " after " + std::to_string(it) +
+                                  " CG iterations)."));
       }
     constraints.distribute(x);
   }
