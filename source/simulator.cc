@@ -131,7 +131,7 @@ namespace ContactDynamics
     prm.leave_subsection();
 
     prm.enter_subsection("Mesh refinement");
-    refinement.parse_parameters(prm, dim);
+    refinement.parse_parameters(prm);
     prm.leave_subsection();
     // p4est refines and repartitions in parallel
     if (refinement.adapt_to_contact)
@@ -308,7 +308,7 @@ namespace ContactDynamics
     for (const auto &line : increment_constraints.get_lines())
       held_dofs.add_index(line.index);
     held_dofs.compress();
-    // hanging nodes of an adapted mesh (never on a 2-D contact surface);
+    // hanging nodes of an adapted mesh (on contact surfaces in 3-D only);
     // an unused multiplier stays held at zero
     hanging_constraints.clear();
     DoFTools::make_hanging_node_constraints(dof_handler, hanging_constraints);
@@ -323,6 +323,8 @@ namespace ContactDynamics
           increment_constraints.add_line(line.index);
           increment_constraints.add_entries(line.index, line.entries);
         }
+    if (contact)
+      contact->add_hanging_constraints(increment_constraints);
     increment_constraints.close();
     mechanics->setup(increment_constraints);
 

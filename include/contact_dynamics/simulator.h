@@ -108,7 +108,10 @@ namespace ContactDynamics
     Tensor<1, dim>
     reaction_force(const std::string &surface) const;
 
-    /** Dirichlet and unused-multiplier constraints (homogeneous). */
+    /**
+     * Constraints of the Newton increments: Dirichlet, unused multipliers
+     * (homogeneous) and hanging nodes (those of all contact surface nodes).
+     */
     const AffineConstraints<double> &
     get_constraints() const
     {

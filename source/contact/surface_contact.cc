@@ -33,29 +33,6 @@ namespace ContactDynamics
       return sums;
     }
 
-    // Adds factor times the derivatives in unconstrained columns to a row
-    // of the Jacobian in one call: entry by entry, the matrix's index
-    // searches cost as much as the 3-D mortar patches.
-    template <typename Derivatives>
-    void
-    add_row(MatrixType                      &jacobian,
-            const AffineConstraints<double> &constraints,
-            const types::global_dof_index    row,
-            const Derivatives               &derivatives,
-            const double                     factor = 1.)
-    {
-      std::vector<types::global_dof_index> columns;
-      std::vector<double>                  values;
-      for (const auto &[column, value] : derivatives)
-        if (!constraints.is_constrained(column))
-          {
-            columns.push_back(column);
-            values.push_back(factor * value);
-          }
-      if (!columns.empty())
-        jacobian.add(row, columns, values);
-    }
-
     // the two-valued selections parse into bools
     using Stabilization = ComplementarityParameters::Stabilization;
     const Selection<Stabilization> stabilization_names{
@@ -331,6 +308,31 @@ namespace ContactDynamics
                 secondary_normal.insert(pair.secondary.dofs[j][c]);
           }
         friction = friction || pair.friction_coefficient > 0;
+      }
+    collect_hanging_dofs(dof_handler);
+    for (auto &pair : pairs)
+      {
+        pair.hanging_parents.assign(pair.secondary.n_nodes(), {});
+        if (!hanging_dofs.empty())
+          {
+            std::map<types::global_dof_index, unsigned int> multiplier_node;
+            for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
+              multiplier_node[pair.secondary.dofs[j][dim]] = j;
+            for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
+              if (const auto h = hanging_dofs.find(pair.secondary.dofs[j][dim]);
+                  h != hanging_dofs.end())
+                for (const auto &[parent, weight] : h->second)
+                  {
+                    const auto k = multiplier_node.find(parent);
+                    AssertThrow(k != multiplier_node.end(),
+                                ExcMessage(
+                                  "A hanging node of a contact surface at " +
+                                  coordinates(pair.secondary.reference[j]) +
+                                  " follows a node that is not on that "
+                                  "surface."));
+                    pair.hanging_parents[j].emplace_back(k->second, weight);
+                  }
+          }
 
         pair.owned_node.assign(pair.secondary.n_nodes(), false);
         for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
@@ -349,9 +351,15 @@ namespace ContactDynamics
         pair.assembled_patch.assign(n_patches, false);
         for (unsigned int e = 0; e < n_patches; ++e)
           {
+            // (a hanging node's sums go to the nodes it follows)
             for (const unsigned int j : patch_nodes(pair, e))
-              pair.handled_patch[e] =
-                pair.handled_patch[e] || pair.owned_node[j];
+              {
+                pair.handled_patch[e] =
+                  pair.handled_patch[e] || pair.owned_node[j];
+                for (const auto &parent : pair.hanging_parents[j])
+                  pair.handled_patch[e] =
+                    pair.handled_patch[e] || pair.owned_node[parent.first];
+              }
             // consecutive patches (neighbours, mostly) to one process
             pair.assembled_patch[e] =
               (std::uint64_t(e) * n_ranks) / n_patches == rank;
@@ -396,6 +404,127 @@ namespace ContactDynamics
                 comm,
                 {surface_displacements.begin(), surface_displacements.end()},
                 friction);
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::collect_hanging_dofs(const DoFHandler<dim> &dof_handler)
+  {
+    hanging_dofs.clear();
+    AffineConstraints<double> hanging;
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging);
+    hanging.close();
+    std::set<types::global_dof_index> surface;
+    for (const auto &pair : pairs)
+      for (const auto *side : {&pair.secondary, &pair.primary})
+        for (const auto &node_dofs : side->dofs)
+          surface.insert(node_dofs.begin(), node_dofs.end());
+    // per line: its dof, the number of entries, then (dof, weight) pairs,
+    // as doubles (exact below 2^53), from the owner of the dof
+    std::vector<double> lines;
+    for (const auto &line : hanging.get_lines())
+      if (!line.entries.empty() && owned_dofs.is_element(line.index) &&
+          surface.count(line.index) > 0)
+        {
+          lines.insert(lines.end(),
+                       {double(line.index), double(line.entries.size())});
+          for (const auto &[parent, weight] : line.entries)
+            lines.insert(lines.end(), {double(parent), weight});
+        }
+    for (const auto &part : Utilities::MPI::all_gather(comm, lines))
+      for (auto x = part.begin(); x != part.end();)
+        {
+          auto      &entries = hanging_dofs[std::llround(*x++)];
+          const long n       = std::lround(*x++);
+          for (long k = 0; k < n; ++k, x += 2)
+            entries.emplace_back(std::llround(x[0]), x[1]);
+        }
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::add_hanging_constraints(
+    AffineConstraints<double> &constraints) const
+  {
+    for (const auto &[dof, entries] : hanging_dofs)
+      if (!constraints.is_constrained(dof))
+        {
+          constraints.add_line(dof);
+          constraints.add_entries(dof, entries);
+        }
+  }
+
+  template <int dim>
+  template <typename Derivatives>
+  void
+  SurfaceContact<dim>::add_row(const LinearSystem           &system,
+                               const types::global_dof_index row,
+                               const Derivatives            &derivatives,
+                               const double                  factor) const
+  {
+    // one call per row: entry by entry, the matrix's index searches cost as
+    // much as the 3-D mortar patches
+    std::vector<types::global_dof_index> columns;
+    std::vector<double>                  values;
+    bool                                 followed = false;
+    for (const auto &[column, value] : derivatives)
+      if (!system.constraints.is_constrained(column))
+        {
+          columns.push_back(column);
+          values.push_back(factor * value);
+        }
+      else if (const auto h = hanging_dofs.find(column);
+               h != hanging_dofs.end())
+        for (const auto &[parent, weight] : h->second)
+          if (!system.constraints.is_constrained(parent))
+            {
+              columns.push_back(parent);
+              values.push_back(factor * value * weight);
+              followed = true;
+            }
+    if (followed)
+      {
+        // (a column once)
+        std::map<types::global_dof_index, double> merged;
+        for (unsigned int i = 0; i < columns.size(); ++i)
+          merged[columns[i]] += values[i];
+        columns.clear();
+        values.clear();
+        for (const auto &[column, value] : merged)
+          {
+            columns.push_back(column);
+            values.push_back(value);
+          }
+      }
+    if (!columns.empty())
+      system.jacobian.add(row, columns, values);
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::move_hanging_sums(PairData &pair) const
+  {
+    if (hanging_dofs.empty())
+      return;
+    for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
+      if (!pair.hanging_parents[j].empty())
+        {
+          const auto   sums = node_sums(pair, j);
+          const double own  = force_per_gap_sum(pair, j);
+          for (const auto &[k, weight] : pair.hanging_parents[j])
+            {
+              const double factor = weight * own / force_per_gap_sum(pair, k);
+              const auto   target = node_sums(pair, k);
+              for (unsigned int q = 0; q < sums.size(); ++q)
+                {
+                  target[q]->value += factor * sums[q]->value;
+                  for (const auto &[i, d] : sums[q]->derivatives)
+                    target[q]->derivatives[i] += factor * d;
+                }
+            }
+          for (LinearizedValue *q : sums)
+            *q = LinearizedValue();
+        }
   }
 
   template <int dim>
@@ -674,16 +803,27 @@ namespace ContactDynamics
         for (unsigned int p = 0; p < n_patches(pair); ++p)
           if (pair.handled_patch[p] || pair.assembled_patch[p])
             {
-              const auto unknowns = pair.obstacle ?
-                                      obstacle_patch_unknowns(pair, p) :
-                                      patch_unknowns(pair, p, pair.pattern[p]);
+              auto unknowns = pair.obstacle ?
+                                obstacle_patch_unknowns(pair, p) :
+                                patch_unknowns(pair, p, pair.pattern[p]);
+              // and what hanging ones follow
+              for (unsigned int i = 0, n = unknowns.size(); i < n; ++i)
+                if (const auto h = hanging_dofs.find(unknowns[i]);
+                    h != hanging_dofs.end())
+                  for (const auto &parent : h->second)
+                    unknowns.push_back(parent.first);
               if (pair.assembled_patch[p])
                 for (const auto row : unknowns)
                   for (const auto col : unknowns)
                     dsp.add(row, col);
               if (pair.handled_patch[p])
                 for (const unsigned int n : patch_nodes(pair, p))
-                  node_columns[n].insert(unknowns.begin(), unknowns.end());
+                  {
+                    node_columns[n].insert(unknowns.begin(), unknowns.end());
+                    for (const auto &parent : pair.hanging_parents[n])
+                      node_columns[parent.first].insert(unknowns.begin(),
+                                                        unknowns.end());
+                  }
             }
         for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
           if (pair.owned_node[j])
@@ -719,7 +859,7 @@ namespace ContactDynamics
     std::set<types::global_dof_index> seen;
     for (const auto &pair : pairs)
       for (unsigned int j = 0; j < pair.secondary.n_nodes(); ++j)
-        if (pair.owned_node[j] &&
+        if (pair.owned_node[j] && pair.hanging_parents[j].empty() &&
             primary.count(pair.secondary.dofs[j][0]) == 0 &&
             seen.insert(pair.secondary.dofs[j][dim]).second)
           {
@@ -749,18 +889,27 @@ namespace ContactDynamics
   SurfaceContact<dim>::add_forces(const PatchForces  &forces,
                                   const LinearSystem &system)
   {
+    // the force on a hanging node acts on the nodes it follows (C^T f)
+    const auto targets = [&](const types::global_dof_index row) {
+      std::vector<std::pair<types::global_dof_index, double>> to{{row, 1.}};
+      if (const auto h = hanging_dofs.find(row); h != hanging_dofs.end())
+        to = h->second;
+      return to;
+    };
     for (const auto &r : forces.rows)
-      {
-        system.residual_full(r.row) += r.value;
-        work.add_force(r.row, r.value);
-        if (system.constraints.is_constrained(r.row))
-          continue;
-        system.residual(r.row) += r.value;
-        if (system.with_jacobian)
-          add_row(system.jacobian, system.constraints, r.row, r.derivatives);
-      }
+      for (const auto &[row, weight] : targets(r.row))
+        {
+          system.residual_full(row) += weight * r.value;
+          work.add_force(row, weight * r.value);
+          if (system.constraints.is_constrained(row))
+            continue;
+          system.residual(row) += weight * r.value;
+          if (system.with_jacobian)
+            add_row(system, row, r.derivatives, weight);
+        }
     for (const auto &t : forces.tangential)
-      work.add_friction_force(t.first, t.second);
+      for (const auto &[row, weight] : targets(t.first))
+        work.add_friction_force(row, weight * t.second);
   }
 
   template <int dim>
@@ -857,11 +1006,7 @@ namespace ContactDynamics
       {
         system.residual(row) += scale * constraint.value;
         if (system.with_jacobian)
-          add_row(system.jacobian,
-                  system.constraints,
-                  row,
-                  constraint.derivatives,
-                  scale);
+          add_row(system, row, constraint.derivatives, scale);
       }
     else
       {
@@ -948,8 +1093,7 @@ namespace ContactDynamics
             system.residual(rows[a]) +=
               scale * complementarity.c_t * v[a].value;
             if (system.with_jacobian)
-              add_row(system.jacobian,
-                      system.constraints,
+              add_row(system,
                       rows[a],
                       v[a].derivatives,
                       scale * complementarity.c_t);
@@ -980,7 +1124,7 @@ namespace ContactDynamics
               for (const auto &d : v[b].derivatives)
                 row[d.first] += curvature * complementarity.c_t * d.second;
             }
-        add_row(system.jacobian, system.constraints, rows[a], row, scale);
+        add_row(system, rows[a], row, scale);
       }
   }
 
@@ -1018,7 +1162,10 @@ namespace ContactDynamics
       comm,
       [&]() {
         for (auto &pair : pairs)
-          assemble_patches(pair, state, system);
+          {
+            assemble_patches(pair, state, system);
+            move_hanging_sums(pair);
+          }
       },
       [&]() {
         for (auto &pair : pairs)

@@ -34,9 +34,9 @@ namespace ContactDynamics
       "where it has left, transferring the state (displacement, velocity, "
       "acceleration, multipliers) to the new mesh; the energy change of "
       "each transfer is its own column of statistics.csv. The mesh is then "
-      "distributed (p4est) whatever Parallel/Mesh says. 2-D only: a refined "
-      "patch of a 3-D contact surface has hanging nodes on the surface. "
-      "See doc/refinement.md for what it costs and buys.");
+      "distributed (p4est) whatever Parallel/Mesh says. In 3-D the refined "
+      "contact surfaces have hanging nodes, whose multipliers follow their "
+      "neighbours' (doc/refinement.md). See doc/refinement.md for what it costs and buys.");
     prm.declare_entry("Interval",
                       default_text(d.interval),
                       Patterns::Integer(1, 1000000),
@@ -89,8 +89,7 @@ namespace ContactDynamics
   }
 
   void
-  RefinementParameters::parse_parameters(ParameterHandler  &prm,
-                                         const unsigned int dim)
+  RefinementParameters::parse_parameters(ParameterHandler &prm)
   {
     adapt_to_contact  = prm.get_bool("Adapt to contact");
     interval          = prm.get_integer("Interval");
@@ -101,13 +100,6 @@ namespace ContactDynamics
     lookahead_steps   = prm.get_double("Lookahead steps");
     passes_per_step   = prm.get_integer("Passes per step");
     coarsen           = prm.get_bool("Coarsen");
-    AssertThrow(!adapt_to_contact || dim == 2,
-                ExcMessage(
-                  "Mesh refinement/Adapt to contact = true is not available "
-                  "in 3-D: a refined patch of a 3-D contact surface has "
-                  "hanging nodes on the surface, which the contact "
-                  "formulations do not treat yet. Use Scene/Refinement "
-                  "factor (or a graded Gmsh mesh) in 3-D."));
   }
 
   template <int dim>

@@ -378,6 +378,7 @@ namespace ContactDynamics
     {
       xi = eta = 0.5;
       alpha    = 0;
+      double step = 1;
       for (unsigned int it = 0; it < 30; ++it)
         {
           const Vec3<double> r = interpolate(x, xi, eta) - p - alpha * n;
@@ -394,11 +395,14 @@ namespace ContactDynamics
           alpha += dalpha;
           if (std::abs(xi) > 1e3 || std::abs(eta) > 1e3)
             return false;
-          if (std::abs(dxi) + std::abs(deta) <
-              1e-14 * (1 + std::abs(xi) + std::abs(eta)))
+          step = (std::abs(dxi) + std::abs(deta)) /
+                 (1 + std::abs(xi) + std::abs(eta));
+          if (step < 1e-14)
             return true;
         }
-      return false;
+      // on small faces far from the origin the steps can stall at the
+      // round-off of the coordinates, above 1e-14
+      return step < 1e-10;
     }
 
     /**

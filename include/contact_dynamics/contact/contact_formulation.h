@@ -174,6 +174,17 @@ namespace ContactDynamics
     add_constraints(AffineConstraints<double> &constraints) const = 0;
 
     /**
+     * After the hanging-node constraints of the process's own part: those of
+     * the other surface degrees of freedom it assembles (an adapted 3-D mesh
+     * has hanging nodes on its contact surfaces).
+     */
+    virtual void
+    add_hanging_constraints(AffineConstraints<double> &constraints) const
+    {
+      (void)constraints;
+    }
+
+    /**
      * Updates the candidate pairs for the trial displacement; true if the
      * sparsity pattern must be rebuilt.
      */

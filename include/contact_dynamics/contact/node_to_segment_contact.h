@@ -63,6 +63,14 @@ namespace ContactDynamics
                             const unsigned int node,
                             const VectorType  &u) const override;
 
+    /** The nodal force is lambda_j L_j n_j: L_j, the reference weight. */
+    double
+    force_per_gap_sum(const PairData    &pair,
+                      const unsigned int node) const override
+    {
+      return pair.secondary.reference_weight[node];
+    }
+
     BoundingBox<dim>
     patch_box(const PairData    &pair,
               const unsigned int patch,

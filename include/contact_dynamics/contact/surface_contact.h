@@ -103,6 +103,10 @@ namespace ContactDynamics
     void
     add_constraints(AffineConstraints<double> &constraints) const override;
 
+    void
+    add_hanging_constraints(
+      AffineConstraints<double> &constraints) const override;
+
     bool
     update_candidates(const VectorType &u) override;
 
@@ -240,6 +244,13 @@ namespace ContactDynamics
       return pairs[pair].secondary;
     }
 
+    /** Empty for a rigid obstacle. */
+    const ContactSurface<dim> &
+    primary_surface(const unsigned int pair) const
+    {
+      return pairs[pair].primary;
+    }
+
     unsigned int
     n_pairs() const override
     {
@@ -290,6 +301,9 @@ namespace ContactDynamics
       std::vector<unsigned int>                 tangent_axis;
       std::map<types::global_dof_index, std::pair<unsigned int, unsigned int>>
         dof_node; // displacement dof -> (node, component)
+      // per secondary node that hangs on an adapted 3-D mesh: the nodes it
+      // follows and their weights (empty for a node with its own unknowns)
+      std::vector<std::vector<std::pair<unsigned int, double>>> hanging_parents;
       // on the obstacle at the trial state and at the last committed step:
       // force, torque about its center (3 components; z only in 2-D) and
       // their friction parts
@@ -397,6 +411,20 @@ namespace ContactDynamics
       return 1.;
     }
 
+    /**
+     * The factor between a node's multiplier times the derivative of its
+     * gap sum and the force it exerts: 1 where the force is the derivative
+     * of lambda_j g_j (mortar), the node's reference weight where it is
+     * lambda_j L_j n_j (node-to-segment). A hanging node's sums go to the
+     * nodes it follows scaled by it, so that each node's condition stays
+     * conjugate to its force.
+     */
+    virtual double
+    force_per_gap_sum(const PairData &, const unsigned int) const
+    {
+      return 1.;
+    }
+
     /** Number of patches of a pair (faces or nodes of the secondary side). */
     virtual unsigned int
     n_patches(const PairData &pair) const = 0;
@@ -488,6 +516,33 @@ namespace ContactDynamics
     add_forces(const PatchForces &forces, const LinearSystem &system);
 
     /**
+     * Adds factor times the derivatives to a row of the Jacobian: columns
+     * of hanging degrees of freedom go to the columns they follow, other
+     * constrained columns are dropped.
+     */
+    template <typename Derivatives>
+    void
+    add_row(const LinearSystem           &system,
+            const types::global_dof_index row,
+            const Derivatives            &derivatives,
+            const double                  factor = 1.) const;
+
+    /**
+     * Moves the gap, weight and rate sums of the hanging secondary nodes to
+     * the nodes they follow (the multiplier of a hanging node is that
+     * interpolation of theirs, so its condition is part of theirs).
+     */
+    void
+    move_hanging_sums(PairData &pair) const;
+
+    /**
+     * hanging_dofs from the hanging-node constraints of every process
+     * (collective).
+     */
+    void
+    collect_hanging_dofs(const DoFHandler<dim> &dof_handler);
+
+    /**
      * The normal complementarity condition of node j: its state, the
      * constraint quantity c g / w and, unless its row is constrained, its
      * row. Returns whether the node is active.
@@ -568,6 +623,12 @@ namespace ContactDynamics
 
     std::vector<types::global_dof_index> normal_multiplier_dofs;
     std::vector<types::global_dof_index> other_multiplier_dofs;
+
+    // the hanging-node constraints of the surface dofs of an adapted 3-D
+    // mesh, of all processes (a process computes patches of any part)
+    std::map<types::global_dof_index,
+             std::vector<std::pair<types::global_dof_index, double>>>
+      hanging_dofs;
 
     double committed_time = 0, trial_time = 0;
     // the work of the obstacles on the bodies, and its friction part

@@ -41,9 +41,8 @@ namespace ContactDynamics
 
     static void
     declare_parameters(ParameterHandler &prm);
-    /** Throws, naming the entry, for a combination that cannot work. */
     void
-    parse_parameters(ParameterHandler &prm, const unsigned int dim);
+    parse_parameters(ParameterHandler &prm);
   };
 
   /**

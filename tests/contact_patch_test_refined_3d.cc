@@ -1,0 +1,114 @@
+// The 3-D contact patch test (as contact_patch_test_3d: non-matching,
+// distorted meshes, nu = 0, the upper block pressed down by delta = 1e-3,
+// exact pressure E delta = 1000 everywhere) with hanging nodes on both
+// contact surfaces: after the load step, in contact, the upper (secondary)
+// block is refined twice along the part x > 0.4 of the interface and the
+// lower (primary) block once along x > 0.6, and a second step holds the
+// load (the secondary side stays the finer one, which node-to-segment
+// needs: under a finer primary side its load is off by 20 %, hanging nodes
+// or not). A refined patch of a 3-D surface has hanging nodes on the surface:
+// their displacements and multipliers follow their neighbours', and their
+// weighted gaps join those of the nodes they follow. Dual mortar must still
+// reproduce the uniform pressure at every secondary node, hanging or not
+// (1e-8, with the 15-point segment rule that contact_patch_test_3d uses for
+// the same bound), with force balance (1e-9). Node-to-segment is recorded
+// (its one-pass error, as on the uniform mesh: 25 %), with its force balance
+// and closed gaps. The approximate Jacobian keeps the test fast (the exact
+// one is checked in contact_jacobian_3d). On two processes (.mpirun=2) the
+// same.
+#include <contact_dynamics/contact/surface_contact.h>
+#include <contact_dynamics/simulator.h>
+
+#include "patch_test_checks.h"
+#include "tests.h"
+
+using namespace dealii;
+
+namespace
+{
+  // surface nodes whose displacement hangs
+  template <int dim>
+  unsigned int
+  hanging_nodes(const ContactDynamics::ContactSurface<dim> &surface,
+                const AffineConstraints<double>            &constraints)
+  {
+    unsigned int n = 0;
+    for (const auto &node_dofs : surface.dofs)
+      {
+        const auto *entries = constraints.get_constraint_entries(node_dofs[0]);
+        n += entries != nullptr && !entries->empty();
+      }
+    return n;
+  }
+
+  double
+  run(const std::string &formulation)
+  {
+    ParameterHandler prm;
+    read_test_parameters("patch_3d.prm",
+                         patch_test_parameters<3>(formulation,
+                                                  "-1e-3*min(t, 1)",
+                                                  "2",
+                                                  R"(
+subsection Parallel
+  set Mesh = distributed
+end
+subsection Contact
+  subsection Mortar
+    set Jacobian = approximate
+  end
+end
+)"),
+                         prm);
+    std::ostringstream            screen;
+    ContactDynamics::Simulator<3> simulator(prm, screen);
+    simulator.initialize();
+    const auto advance_to = [&](const double end) {
+      double dt = end - simulator.current_time();
+      while (simulator.current_time() < end - 1e-12)
+        if (!simulator.advance(std::min(dt, end - simulator.current_time())))
+          dt /= 2;
+    };
+    advance_to(1);
+    auto &tria = simulator.get_triangulation();
+    for (unsigned int round = 0; round < 2; ++round)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
+          {
+            bool at_interface = false;
+            for (const unsigned int v : cell->vertex_indices())
+              at_interface =
+                at_interface || std::abs(cell->vertex(v)[1] - 0.5) < 1e-12;
+            const bool lower = cell->material_id() == 1;
+            if (cell->is_locally_owned() && at_interface &&
+                (lower ? round == 0 && cell->center()[0] > 0.6 :
+                         cell->center()[0] > 0.4))
+              cell->set_refine_flag();
+          }
+        check_true(formulation + ": refined", simulator.refine_and_transfer());
+      }
+    const auto *contact =
+      dynamic_cast<const ContactDynamics::SurfaceContact<3> *>(
+        simulator.get_contact());
+    // (every process knows the constraints of all surface nodes)
+    const auto        &constraints = simulator.get_constraints();
+    const unsigned int on_secondary =
+      hanging_nodes(contact->secondary_surface(0), constraints);
+    const unsigned int on_primary =
+      hanging_nodes(contact->primary_surface(0), constraints);
+    deallog << formulation << ": hanging nodes on the secondary surface "
+            << on_secondary << ", on the primary surface " << on_primary
+            << std::endl;
+    check_true(formulation + ": hanging nodes on both surfaces",
+               on_secondary > 0 && on_primary > 0);
+    advance_to(2);
+    return check_patch_test(formulation, simulator);
+  }
+} // namespace
+
+int
+main()
+{
+  initlog();
+  report_patch_tests(run);
+}
