@@ -533,8 +533,9 @@ namespace ContactDynamics
             Assert(!name.empty(),
                    ExcInternalError("A boundary face belongs to no surface."));
             face->set_boundary_id(layout.surface_id(name));
+            // (in 3-D its edges too: they are refined first)
             if (!body.curved_surface.empty() && name == body.curved_surface)
-              face->set_manifold_id(1 + cell->material_id());
+              face->set_all_manifold_ids(1 + cell->material_id());
           }
 
     // Refinement keeps curved surfaces on their circles.
