@@ -26,21 +26,6 @@ using namespace dealii;
 
 namespace
 {
-  // surface nodes whose displacement hangs
-  template <int dim>
-  unsigned int
-  hanging_nodes(const ContactDynamics::ContactSurface<dim> &surface,
-                const AffineConstraints<double>            &constraints)
-  {
-    unsigned int n = 0;
-    for (const auto &node_dofs : surface.dofs)
-      {
-        const auto *entries = constraints.get_constraint_entries(node_dofs[0]);
-        n += entries != nullptr && !entries->empty();
-      }
-    return n;
-  }
-
   double
   run(const std::string &formulation)
   {
@@ -93,9 +78,9 @@ end
     // (every process knows the constraints of all surface nodes)
     const auto        &constraints = simulator.get_constraints();
     const unsigned int on_secondary =
-      hanging_nodes(contact->secondary_surface(0), constraints);
+      hanging_surface_nodes(contact->secondary_surface(0), constraints);
     const unsigned int on_primary =
-      hanging_nodes(contact->primary_surface(0), constraints);
+      hanging_surface_nodes(contact->primary_surface(0), constraints);
     deallog << formulation << ": hanging nodes on the secondary surface "
             << on_secondary << ", on the primary surface " << on_primary
             << std::endl;

@@ -90,6 +90,8 @@ check_range(const std::string &name,
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <deal.II/lac/affine_constraints.h>
+
 #include <contact_dynamics/application.h>
 #include <contact_dynamics/contact/contact_formulation.h>
 #include <contact_dynamics/scenes/scene.h>
@@ -143,6 +145,23 @@ count_node_states(const States &states)
       n[0] += node.active;
       n[1] += node.active && node.persistent;
       n[2] += node.stick;
+    }
+  return n;
+}
+
+// Nodes of a contact surface whose displacement hangs (follows other nodes)
+// under `constraints` (the simulator's: they hold those of every surface
+// node on every process).
+template <typename Surface>
+unsigned int
+hanging_surface_nodes(const Surface                           &surface,
+                      const dealii::AffineConstraints<double> &constraints)
+{
+  unsigned int n = 0;
+  for (const auto &node_dofs : surface.dofs)
+    {
+      const auto *entries = constraints.get_constraint_entries(node_dofs[0]);
+      n += entries != nullptr && !entries->empty();
     }
   return n;
 }
