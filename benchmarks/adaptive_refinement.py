@@ -7,6 +7,15 @@
            adaptive ones (factor 0.5 and 1 to 5 levels near the contact,
            Buffer cells = 8): half-width and peak pressure errors against
            Hertz for the measured load, unknowns, wall time, peak memory.
+  sphere   prm/examples/hertz_3d.prm (a quarter of a sphere on a block)
+           at two loads small enough for Hertz's assumptions (the top
+           pushed down by 0.002 and 0.0005: a/R = 0.045 and 0.023),
+           uniform meshes (factor 1 to 2, the largest that fit in memory)
+           against adaptive ones (factor 0.5 and 3 to 5 levels near the
+           contact, Buffer cells = BUFFER_3D): contact radius (second
+           moment of the nodal pressures, integrated on a triangulation of
+           the nodes) and peak pressure against Hertz, unknowns, time,
+           memory.
   ironing  prm/ironing/mortar.prm to t = 3: the uniform
            factor 1 mesh against factor 0.5 with one level in a band that
            follows the tool: mean tool forces over t in [2, 3], relative
@@ -14,9 +23,11 @@
 
 Writes doc/adaptive-refinement-table.md and doc/figures/hertz_adaptive.png.
 Runs one process at a time (wall times); about 10 minutes and 12 GB (the
-uniform factor 8 Hertz mesh: 3.5 million unknowns, UMFPACK).
+uniform factor 8 Hertz mesh: 3.5 million unknowns, UMFPACK), and 15 more
+minutes for the sphere (its uniform factor 2 mesh: 0.34 million unknowns,
+10 GB).
 
-    benchmarks/adaptive_refinement.py [--build build] [--only hertz|ironing]
+    benchmarks/adaptive_refinement.py [--build build] [--only hertz|sphere|ironing]
 """
 import argparse
 import math
@@ -95,6 +106,60 @@ def hertz(exe):
     return table
 
 
+BUFFER_3D = 2
+
+
+def sphere_errors(directory, stats):
+    """Contact radius and peak pressure of the 3-D quarter sphere against
+    Hertz for the measured load P (four times the quarter's force): a from
+    the second moment a^2 = 5/2 int p r^2 / int p, integrated with linear
+    interpolation on a Delaunay triangulation of the nodes (x, z) within
+    3 a of the axis; p0 the largest nodal pressure."""
+    import matplotlib.tri as mtri
+    s, _ = avc.last_surface(directory, stats)
+    x, z, p = (np.asarray(s[c]) for c in ("x", "z", "pressure"))
+    P = 4 * abs(stats["contact_force_y"][-1])
+    E, nu, R = 1000.0, 0.3, 1.0
+    E_star = E / (2 * (1 - nu * nu))
+    a = (3 * P * R / (4 * E_star)) ** (1 / 3)
+    p0 = 3 * P / (2 * math.pi * a * a)
+    near = np.hypot(x, z) < 3 * a
+    x, z, p_near = x[near], z[near], p[near]
+    moments = [0.0, 0.0]
+    for t in mtri.Triangulation(x, z).triangles:
+        area = 0.5 * abs((x[t[1]] - x[t[0]]) * (z[t[2]] - z[t[0]])
+                         - (x[t[2]] - x[t[0]]) * (z[t[1]] - z[t[0]]))
+        moments[0] += area * p_near[t].mean()
+        moments[1] += area * (p_near[t] * (x[t] ** 2 + z[t] ** 2)).mean()
+    a_h = math.sqrt(2.5 * moments[1] / moments[0])
+    return dict(a=a_h / a - 1, p0=p.max() / p0 - 1, a_over_R=a / R,
+                active=int(np.sum(np.asarray(s["active"]) > 0)),
+                balance=4 * moments[0] / P - 1)
+
+
+def sphere(exe):
+    rows = []
+    for load, uniform, levels in ((0.002, [1, 1.5, 2], [3, 4]), (0.0005, [], [3, 4, 5])):
+        common = {"Boundary conditions/Dirichlet":
+                  "block_bottom: xyz: 0; block_left: x: 0; block_front: z: 0; "
+                  f"sphere_left: x: 0; sphere_front: z: 0; sphere_top: y: -{load}*t",
+                  "Output/VTU interval": "1"}
+        runs = [("uniform", f, 0, {"Scene/Refinement factor": str(f)}) for f in uniform]
+        runs += [("adaptive", 0.5, n, {
+            "Scene/Refinement factor": "0.5", "Mesh refinement/Adapt to contact": "true",
+            "Mesh refinement/Maximum levels": str(n), "Mesh refinement/Passes per step": str(n + 1),
+            "Mesh refinement/Buffer cells": str(BUFFER_3D)}) for n in levels]
+        for kind, factor, n, changes in runs:
+            directory, memory = run(exe, f"sphere_{load:g}_{kind}_{factor:g}_{n}",
+                                    "prm/examples/hertz_3d.prm", {**common, **changes})
+            stats = avc.read_csv(directory / "statistics.csv")
+            rows.append(dict(load=load, kind=kind, factor=factor, levels=n,
+                             unknowns=unknowns_of(directory, stats),
+                             wall=float(stats["wall_time"][-1]), memory=memory,
+                             **sphere_errors(directory, stats)))
+    return rows
+
+
 def ironing(exe):
     base = "prm/ironing/mortar.prm"
     common = {"Time integration/End time": "3", "Output/VTU interval": "0"}
@@ -132,7 +197,7 @@ def ironing(exe):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--build", default="build")
-    parser.add_argument("--only", choices=["hertz", "ironing"])
+    parser.add_argument("--only", choices=["hertz", "sphere", "ironing"])
     args = parser.parse_args()
     exe = (ROOT / args.build / "contact-dynamics").resolve()
     lines = ["<!-- written by benchmarks/adaptive_refinement.py -->\n"]
@@ -196,6 +261,22 @@ def main():
         fig.tight_layout()
         (ROOT / "doc" / "figures").mkdir(exist_ok=True)
         fig.savefig(ROOT / "doc" / "figures" / "hertz_adaptive.png", dpi=120)
+    if args.only in (None, "sphere"):
+        print("Sphere (3-D Hertz), uniform and adaptive:")
+        rows = sphere(exe)
+        lines.append("\n### Sphere (3-D Hertz): uniform against adaptive meshes\n")
+        lines.append("| top displacement | a/R | mesh | unknowns | active nodes | a error | "
+                     "p0 error | int p / P - 1 | wall time [s] | peak memory [MB] |")
+        lines.append("|---|---|---|---|---|---|---|---|---|---|")
+        for r in rows:
+            name = (f"uniform, factor {r['factor']:g}" if r["kind"] == "uniform"
+                    else f"factor 0.5 + {r['levels']} levels")
+            lines.append(f"| {r['load']:g} | {r['a_over_R']:.3f} | {name} | {r['unknowns']} | "
+                         f"{r['active']} | {100 * r['a']:+.2f} % | {100 * r['p0']:+.2f} % | "
+                         f"{100 * r['balance']:+.2f} % | {r['wall']:.1f} | {r['memory']:.0f} |")
+        lines.append(f"\nAdaptive meshes: Buffer cells = {BUFFER_3D}, Passes per step = levels + 1. "
+                     "Active nodes: of the quarter's secondary surface. The last column checks the "
+                     "integration of the nodal pressures (the load P is the contact force).")
     if args.only in (None, "ironing"):
         print("Ironing, uniform and adaptive band:")
         table = ironing(exe)
@@ -222,7 +303,7 @@ def main():
         if part:
             part = part if part.startswith("### ") else "### " + part
             sections[part[4:].split(" ")[0].lower()] = part + "\n"
-    name.write_text(lines[0] + "\n" + "\n".join(sections[k] for k in ("hertz", "ironing")
+    name.write_text(lines[0] + "\n" + "\n".join(sections[k] for k in ("hertz", "sphere", "ironing")
                                                    if k in sections))
     print(f"wrote {name}")
 
