@@ -36,39 +36,22 @@ end
     std::ostringstream            screen;
     ContactDynamics::Simulator<2> simulator(prm, screen);
     simulator.initialize();
-    // a step, halved until it converges (as run() does)
-    const auto advance_to = [&](const double end) {
-      double dt = end - simulator.current_time();
-      while (simulator.current_time() < end - 1e-12)
-        if (!simulator.advance(std::min(dt, end - simulator.current_time())))
-          dt /= 2;
-    };
-    advance_to(1);
-    // cells at the interface y = 0.5: of the lower block (material 1) left
-    // of x = 0.5, twice; of the upper block right of x = 0.4, once
-    auto &tria = simulator.get_triangulation();
-    for (unsigned int round = 0; round < 2; ++round)
-      {
-        for (const auto &cell : tria.active_cell_iterators())
-          {
-            bool at_interface = false;
-            for (const unsigned int v : cell->vertex_indices())
-              at_interface =
-                at_interface || std::abs(cell->vertex(v)[1] - 0.5) < 1e-12;
-            const bool lower = cell->material_id() == 1;
-            if (cell->is_locally_owned() && at_interface &&
-                (lower ? cell->center()[0] < 0.5 :
-                         round == 0 && cell->center()[0] > 0.4))
-              cell->set_refine_flag();
-          }
-        check_true(formulation + ": refined", simulator.refine_and_transfer());
-      }
+    advance_to(simulator, 1);
+    // the lower block left of x = 0.5 twice, the upper one right of 0.4 once
+    refine_interface(simulator,
+                     formulation,
+                     2,
+                     [](const bool         lower,
+                        const unsigned int round,
+                        const double       x) {
+                       return lower ? x < 0.5 : round == 0 && x > 0.4;
+                     });
     unsigned int hanging = 0;
     for (const auto &line : simulator.get_constraints().get_lines())
       hanging += !line.entries.empty();
     check_true(formulation + ": hanging nodes",
                Utilities::MPI::sum(hanging, MPI_COMM_WORLD) > 0);
-    advance_to(2);
+    advance_to(simulator, 2);
 
     return check_patch_test(formulation, simulator);
   }

@@ -48,30 +48,16 @@ end
     std::ostringstream            screen;
     ContactDynamics::Simulator<3> simulator(prm, screen);
     simulator.initialize();
-    const auto advance_to = [&](const double end) {
-      double dt = end - simulator.current_time();
-      while (simulator.current_time() < end - 1e-12)
-        if (!simulator.advance(std::min(dt, end - simulator.current_time())))
-          dt /= 2;
-    };
-    advance_to(1);
-    auto &tria = simulator.get_triangulation();
-    for (unsigned int round = 0; round < 2; ++round)
-      {
-        for (const auto &cell : tria.active_cell_iterators())
-          {
-            bool at_interface = false;
-            for (const unsigned int v : cell->vertex_indices())
-              at_interface =
-                at_interface || std::abs(cell->vertex(v)[1] - 0.5) < 1e-12;
-            const bool lower = cell->material_id() == 1;
-            if (cell->is_locally_owned() && at_interface &&
-                (lower ? round == 0 && cell->center()[0] > 0.6 :
-                         cell->center()[0] > 0.4))
-              cell->set_refine_flag();
-          }
-        check_true(formulation + ": refined", simulator.refine_and_transfer());
-      }
+    advance_to(simulator, 1);
+    // the upper block right of x = 0.4 twice, the lower one right of 0.6 once
+    refine_interface(simulator,
+                     formulation,
+                     2,
+                     [](const bool         lower,
+                        const unsigned int round,
+                        const double       x) {
+                       return lower ? round == 0 && x > 0.6 : x > 0.4;
+                     });
     const auto *contact =
       dynamic_cast<const ContactDynamics::SurfaceContact<3> *>(
         simulator.get_contact());
@@ -86,7 +72,7 @@ end
             << std::endl;
     check_true(formulation + ": hanging nodes on both surfaces",
                on_secondary > 0 && on_primary > 0);
-    advance_to(2);
+    advance_to(simulator, 2);
     return check_patch_test(formulation, simulator);
   }
 } // namespace

@@ -131,6 +131,46 @@ end
 )" + extra;
 }
 
+// Advances the simulator to `end` in one step, halved until it converges
+// (as run() does).
+template <int dim>
+void
+advance_to(ContactDynamics::Simulator<dim> &simulator, const double end)
+{
+  double dt = end - simulator.current_time();
+  while (simulator.current_time() < end - 1e-12)
+    if (!simulator.advance(std::min(dt, end - simulator.current_time())))
+      dt /= 2;
+}
+
+// Refines the cells at the patch test's interface y = 0.5 in `rounds`
+// rounds, those for which refine(lower, round, x of the cell's center)
+// holds (lower: of the lower block, material 1), with the state moved to
+// each new mesh (every round must change it).
+template <int dim, typename Refine>
+void
+refine_interface(ContactDynamics::Simulator<dim> &simulator,
+                 const std::string               &formulation,
+                 const unsigned int               rounds,
+                 const Refine                    &refine)
+{
+  auto &tria = simulator.get_triangulation();
+  for (unsigned int round = 0; round < rounds; ++round)
+    {
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          bool at_interface = false;
+          for (const unsigned int v : cell->vertex_indices())
+            at_interface =
+              at_interface || std::abs(cell->vertex(v)[1] - 0.5) < 1e-12;
+          if (cell->is_locally_owned() && at_interface &&
+              refine(cell->material_id() == 1, round, cell->center()[0]))
+            cell->set_refine_flag();
+        }
+      check_true(formulation + ": refined", simulator.refine_and_transfer());
+    }
+}
+
 // Runs `run` for mortar (exact: 1e-8) and NTS (its one-pass error) and
 // reports the errors.
 template <typename Run>

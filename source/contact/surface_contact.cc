@@ -890,10 +890,13 @@ namespace ContactDynamics
                                   const LinearSystem &system)
   {
     // the force on a hanging node acts on the nodes it follows (C^T f)
-    const auto targets = [&](const types::global_dof_index row) {
-      std::vector<std::pair<types::global_dof_index, double>> to{{row, 1.}};
-      if (const auto h = hanging_dofs.find(row); h != hanging_dofs.end())
-        to = h->second;
+    std::vector<std::pair<types::global_dof_index, double>> to(1);
+    const auto targets = [&](const types::global_dof_index row)
+      -> const std::vector<std::pair<types::global_dof_index, double>> & {
+      if (!hanging_dofs.empty())
+        if (const auto h = hanging_dofs.find(row); h != hanging_dofs.end())
+          return h->second;
+      to[0] = {row, 1.};
       return to;
     };
     for (const auto &r : forces.rows)
@@ -1456,6 +1459,15 @@ namespace ContactDynamics
           {
             const NodeState &node = pair.nodes[j];
             if (!pair.owned_node[j])
+              continue;
+            // a hanging node is held with the nodes it follows, on average:
+            // where one of them is in contact, it is judged by them
+            if (std::any_of(pair.hanging_parents[j].begin(),
+                            pair.hanging_parents[j].end(),
+                            [&](const auto &parent) {
+                              const NodeState &q = pair.nodes[parent.first];
+                              return q.active || q.persistent;
+                            }))
               continue;
             const Point<dim> x0    = s.position(j, committed_u);
             const Point<dim> x1    = s.position(j, u);
