@@ -90,8 +90,6 @@ check_range(const std::string &name,
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
-#include <deal.II/lac/affine_constraints.h>
-
 #include <contact_dynamics/application.h>
 #include <contact_dynamics/contact/contact_formulation.h>
 #include <contact_dynamics/scenes/scene.h>
@@ -152,10 +150,9 @@ count_node_states(const States &states)
 // Nodes of a contact surface whose displacement hangs (follows other nodes)
 // under `constraints` (the simulator's: they hold those of every surface
 // node on every process).
-template <typename Surface>
+template <typename Surface, typename Constraints>
 unsigned int
-hanging_surface_nodes(const Surface                           &surface,
-                      const dealii::AffineConstraints<double> &constraints)
+hanging_surface_nodes(const Surface &surface, const Constraints &constraints)
 {
   unsigned int n = 0;
   for (const auto &node_dofs : surface.dofs)
