@@ -20,6 +20,7 @@
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
 
+#include "patch_test_checks.h"
 #include "tests.h"
 
 using namespace dealii;
@@ -55,7 +56,8 @@ subsection Nonlinear solver
   set Absolute tolerance = 1e-11
 end
 subsection Contact
-  set Formulation = )" + std::string(nts ? "nts" : "mortar") + R"(
+  set Formulation = )" + std::string(nts ? "nts" : "mortar") +
+                                   R"(
   set Pairs = upper_bottom: lower_top
   set Monitored points = 0.5, 0.5, 0.5
   subsection Mortar
@@ -81,19 +83,9 @@ end
   const auto *contact =
     dynamic_cast<const ContactDynamics::SurfaceContact<3> *>(
       simulator.get_contact());
-  const double exact = 1000;
-  double       worst = 0, worst_gap = 0;
-  unsigned int n_active = 0;
-  for (const auto &node : contact->node_states(0))
-    {
-      worst = std::max(worst, std::abs(node.pressure - exact));
-      if (node.active)
-        {
-          ++n_active;
-          worst_gap = std::max(worst_gap, std::abs(node.normalized_gap()));
-        }
-    }
-  const auto stats = contact_statistics(*contact);
+  const double exact                      = 1000;
+  const auto [worst, worst_gap, n_active] = nodal_errors(*contact, exact);
+  const auto stats                        = contact_statistics(*contact);
   deallog.push(nts ? std::string("nts") :
                      "rule " + std::to_string(n_points_1d));
   const auto top    = simulator.reaction_force("upper_top");

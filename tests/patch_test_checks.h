@@ -11,6 +11,29 @@
 
 #include "tests.h"
 
+#include <tuple>
+
+// Over the secondary nodes of pair 0: the largest |pressure - exact|, the
+// largest |normalized gap| of an active node, and the number of active nodes.
+template <int dim>
+std::tuple<double, double, unsigned int>
+nodal_errors(const ContactDynamics::SurfaceContact<dim> &contact,
+             const double                                exact)
+{
+  double       worst = 0, worst_gap = 0;
+  unsigned int n_active = 0;
+  for (const auto &node : contact.node_states(0))
+    {
+      worst = std::max(worst, std::abs(node.pressure - exact));
+      if (node.active)
+        {
+          ++n_active;
+          worst_gap = std::max(worst_gap, std::abs(node.normalized_gap()));
+        }
+    }
+  return {worst, worst_gap, n_active};
+}
+
 template <int dim>
 double
 check_patch_test(const std::string                     &formulation,
@@ -21,19 +44,9 @@ check_patch_test(const std::string                     &formulation,
   const auto *contact =
     dynamic_cast<const ContactDynamics::SurfaceContact<dim> *>(
       simulator.get_contact());
-  const double exact = 1000;
-  double       worst = 0, worst_gap = 0;
-  unsigned int n_active = 0;
-  for (const auto &node : contact->node_states(0))
-    {
-      worst = std::max(worst, std::abs(node.pressure - exact));
-      if (node.active)
-        {
-          ++n_active;
-          worst_gap = std::max(worst_gap, std::abs(node.normalized_gap()));
-        }
-    }
-  const auto stats  = contact_statistics(*contact);
+  const double exact                      = 1000;
+  const auto [worst, worst_gap, n_active] = nodal_errors(*contact, exact);
+  const auto stats                        = contact_statistics(*contact);
   const auto top    = simulator.reaction_force("upper_top");
   const auto bottom = simulator.reaction_force("lower_bottom");
   deallog << formulation << ": secondary nodes "
