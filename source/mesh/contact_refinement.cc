@@ -61,10 +61,13 @@ namespace ContactDynamics
       "Buffer cells",
       default_text(d.buffer_cells),
       Patterns::Double(0.1, 100),
-      "A cell within this many of its own diameters of the contact zone "
-      "is refined: each level keeps about this many cells between the "
+      "A cell within this many cell diameters of the contact zone is "
+      "refined: each level keeps about this many cells between the "
       "contact and the next coarser level. A cell farther than this many "
-      "plus one of its parent's diameters is coarsened.");
+      "plus one of its parent's diameters is coarsened. The diameter is "
+      "that of the contact zone's cells at the cell's level (or the "
+      "cell's own, if smaller): the large far cells of a graded mesh do "
+      "not count their own size.");
     prm.declare_entry(
       "Lookahead steps",
       default_text(d.lookahead_steps),
@@ -117,11 +120,17 @@ namespace ContactDynamics
     const unsigned int top    = base_level + parameters.maximum_levels;
     const unsigned int kids   = 1u << dim;
 
-    // distance of each owned cell's current position to the contact zone,
-    // in units of its diameter
-    std::vector<
-      std::pair<double, typename Triangulation<dim>::active_cell_iterator>>
-      refine;
+    // distance of each owned cell's current position to the contact zone
+    struct Measured
+    {
+      typename Triangulation<dim>::active_cell_iterator cell;
+      double                                            distance, diameter;
+    };
+    std::vector<Measured> measured;
+    // the largest diameter a cell touching the contact zone would have at
+    // the top level: the unit of the buffer, so that a graded mesh's large
+    // far cells do not reach the zone by their own size
+    double zone_diameter = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         if (!cell->is_locally_owned())
@@ -148,15 +157,39 @@ namespace ContactDynamics
                        std::back_inserter(nearest));
             distance = std::max(0., center.distance(nearest[0]) - radius);
           }
-        const double       diameter = 2 * radius;
-        const unsigned int level    = cell->level();
-        if (distance < buffer * diameter && level < top)
-          refine.emplace_back(distance / diameter,
-                              typename Triangulation<dim>::active_cell_iterator(
-                                cell));
+        const double diameter = 2 * radius;
+        if (distance == 0)
+          zone_diameter = std::max(
+            zone_diameter,
+            std::ldexp(diameter,
+                       int(cell->level()) -
+                         int(std::max<unsigned int>(top, cell->level()))));
+        measured.push_back(
+          {typename Triangulation<dim>::active_cell_iterator(cell),
+           distance,
+           diameter});
+      }
+    zone_diameter = Utilities::MPI::max(zone_diameter, comm);
+
+    std::vector<
+      std::pair<double, typename Triangulation<dim>::active_cell_iterator>>
+      refine;
+    for (const auto &m : measured)
+      {
+        const unsigned int level = m.cell->level();
+        // the diameter a contact-zone cell has at this cell's level
+        const double unit =
+          zone_diameter > 0 ?
+            std::min(m.diameter,
+                     std::ldexp(zone_diameter,
+                                int(std::max<unsigned int>(top, level)) -
+                                  int(level))) :
+            m.diameter;
+        if (m.distance < buffer * unit && level < top)
+          refine.emplace_back(m.distance / unit, m.cell);
         else if (parameters.coarsen && level > base_level &&
-                 distance > (buffer + 1) * 2 * diameter)
-          cell->set_coarsen_flag();
+                 m.distance > (buffer + 1) * 2 * unit)
+          m.cell->set_coarsen_flag();
       }
 
     // the cell limit: refine the nearest cells only (a bisection on the

@@ -48,10 +48,13 @@ namespace ContactDynamics
   /**
    * Sets refine and coarsen flags on the locally owned active cells of the
    * distributed mesh of `dof_handler`: a cell whose current position (the
-   * displacement `u`, ghosted) comes within `buffer_cells` of its own
-   * diameters of a contact point is refined, up to `base_level +
-   * maximum_levels`; one farther than (buffer_cells + 1) diameters of its
-   * parent is coarsened, down to `base_level`. Refinements that would make
+   * displacement `u`, ghosted) comes within `buffer_cells` units of a
+   * contact point is refined, up to `base_level + maximum_levels`; one
+   * farther than (buffer_cells + 1) units of its parent is coarsened, down
+   * to `base_level`. The unit of a cell is the diameter the cells touching
+   * the contact zone have at its level (the largest of them), or its own
+   * diameter if that is smaller, so that large far cells of a graded mesh
+   * are not refined by their own size. Refinements that would make
    * more than `maximum_cells` cells are dropped, the farthest first.
    * Returns the number of refinements dropped (collective).
    */
