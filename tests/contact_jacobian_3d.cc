@@ -18,9 +18,15 @@
 // face normal and with the normal smoothed near the face edges (blended
 // into the interpolated nodal normals); its moments do not balance where
 // the smoothed normal is not along x - x_p.
+// On a refined interface (the upper, secondary block refined twice along
+// x > 0.4, the lower once along x > 0.6: hanging nodes on both surfaces,
+// whose gap sums join their parents' and whose forces go to them), the
+// same checks with the trial state and the direction satisfying the
+// hanging-node constraints, on the rows that are not constrained.
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
 
+#include "patch_test_checks.h"
 #include "tests.h"
 
 #include <random>
@@ -34,7 +40,8 @@ namespace
   parameters(const std::string &scheme,
              const std::string &jacobian,
              const bool         friction,
-             const double       smoothing)
+             const double       smoothing,
+             const bool         refined)
   {
     // smoothing < 0: mortar; else node-to-segment with that smoothing
     // distance (the same complementarity parameters)
@@ -98,7 +105,7 @@ subsection Output
   set Output directory = output_jacobian_3d
   set VTU interval = 0
 end
-)";
+)" + (refined ? "subsection Parallel\n  set Mesh = distributed\nend\n" : "");
   }
 
   void
@@ -107,15 +114,26 @@ end
         const std::string &jacobian,
         const bool         held,
         const bool         friction  = false,
-        const double       smoothing = -1)
+        const double       smoothing = -1,
+        const bool         refined   = false)
   {
     ParameterHandler prm;
-    read_test_parameters("jacobian_3d.prm",
-                         parameters(scheme, jacobian, friction, smoothing),
-                         prm);
+    read_test_parameters(
+      "jacobian_3d.prm",
+      parameters(scheme, jacobian, friction, smoothing, refined),
+      prm);
     std::ostringstream            screen;
     ContactDynamics::Simulator<3> simulator(prm, screen);
     simulator.initialize();
+    if (refined)
+      refine_interface(simulator,
+                       name,
+                       2,
+                       [](const bool         lower,
+                          const unsigned int round,
+                          const double       x) {
+                         return lower ? round == 0 && x > 0.6 : x > 0.4;
+                       });
     if (held)
       check_true(name + ": first step converges", simulator.advance(0.01));
     const auto &constraints = simulator.get_constraints();
@@ -147,6 +165,31 @@ end
           direction(i) = 1e-3 * uniform(rng);
         }
     constraints.set_zero(direction);
+    // hanging nodes follow their parents (the constraints are closed: the
+    // entries are unconstrained)
+    unsigned int n_hanging = 0;
+    for (const auto &line : constraints.get_lines())
+      if (!line.entries.empty())
+        {
+          ++n_hanging;
+          trial(line.index)     = line.inhomogeneity;
+          direction(line.index) = 0;
+          mask(line.index)      = 0;
+          for (const auto &[j, c] : line.entries)
+            {
+              trial(line.index) += c * trial(j);
+              direction(line.index) += c * direction(j);
+            }
+        }
+    check_true(name + ": hanging dofs if and only if refined",
+               (n_hanging > 0) == refined);
+    if (refined)
+      deallog << name << ": hanging nodes on the secondary surface "
+              << hanging_surface_nodes(contact->secondary_surface(0),
+                                       constraints)
+              << ", on the primary surface "
+              << hanging_surface_nodes(contact->primary_surface(0), constraints)
+              << std::endl;
 
     // (round-off dominates the differences below: 1e-7 gives 1e-6)
     VectorType r(trial);
@@ -266,4 +309,39 @@ main()
         0.3);
   check("nts, friction, quasi-static", "quasi-static", "exact", false, true, 0);
   check("nts smoothed, friction, held", "newmark", "exact", true, true, 0.3);
+  check("refined, quasi-static, exact",
+        "quasi-static",
+        "exact",
+        false,
+        false,
+        -1,
+        true);
+  check("refined, held (persistency), exact",
+        "newmark",
+        "exact",
+        true,
+        false,
+        -1,
+        true);
+  check("refined, friction, quasi-static",
+        "quasi-static",
+        "exact",
+        false,
+        true,
+        -1,
+        true);
+  check("nts, refined, quasi-static, exact",
+        "quasi-static",
+        "exact",
+        false,
+        false,
+        0,
+        true);
+  check("nts, refined, held (persistency), exact",
+        "newmark",
+        "exact",
+        true,
+        false,
+        0,
+        true);
 }

@@ -128,8 +128,9 @@ namespace ContactDynamics
     };
     std::vector<Measured> measured;
     // the largest diameter a cell touching the contact zone would have at
-    // the top level: the unit of the buffer, so that a graded mesh's large
-    // far cells do not reach the zone by their own size
+    // the top level (cells are never above it): the unit of the buffer, so
+    // that a graded mesh's large far cells do not reach the zone by their
+    // own size
     double zone_diameter = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
