@@ -304,6 +304,13 @@ namespace ContactDynamics
       increment_constraints.add_line(i);
     if (contact)
       contact->add_constraints(increment_constraints);
+    {
+      std::vector<bool> displacement(fe->n_components(), false);
+      for (unsigned int d = 0; d < dim; ++d)
+        displacement[d] = true;
+      displacement_dofs =
+        DoFTools::extract_dofs(dof_handler, ComponentMask(displacement));
+    }
     held_dofs = IndexSet(dof_handler.n_dofs());
     for (const auto &line : increment_constraints.get_lines())
       held_dofs.add_index(line.index);
@@ -710,6 +717,8 @@ namespace ContactDynamics
     step                         = 0;
     cumulative_newton_iterations = 0;
     time_step_cuts               = 0;
+    rejected_steps               = 0;
+    error_estimate               = 0;
     setup_system();
     apply_initial_conditions();
 
@@ -733,6 +742,9 @@ namespace ContactDynamics
     if (refinement.adapt_to_contact)
       for (const auto *c :
            {"cells", "unknowns", "mesh_changes", "transfer_energy"})
+        columns.emplace_back(c);
+    if (integrator.error_tolerance() > 0)
+      for (const auto *c : {"error_estimate", "rejected_steps"})
         columns.emplace_back(c);
     check_collectively(mpi_communicator, [&]() {
       if (is_root(mpi_communicator))
@@ -793,6 +805,18 @@ namespace ContactDynamics
     auto         ao = a.begin();
     for (; un != u_new.end(); ++un, ++vn, ++an, ++uo, ++vo, ++ao)
       integrator.update(dt, *uo, *vo, *ao, *un, *vn, *an);
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::local_error_estimate() const
+  {
+    const double factor  = std::abs(integrator.local_error_factor(dt_current));
+    double       largest = 0;
+    for (const auto i : displacement_dofs)
+      if (!increment_constraints.is_constrained(i))
+        largest = std::max(largest, factor * std::abs(a_new(i) - a(i)));
+    return Utilities::MPI::max(largest, mpi_communicator);
   }
 
   template <int dim>
@@ -1084,6 +1108,28 @@ namespace ContactDynamics
         if (failure.empty() && contact)
           failure = contact->check_step(u_ghost);
       }
+    // adaptive time steps: the step is solved again with a smaller dt if
+    // its local error is too large (not below the minimum dt)
+    rejected_by_estimate = false;
+    if (failure.empty() && result.converged && integrator.error_tolerance() > 0)
+      {
+        const double tolerance = integrator.error_tolerance();
+        error_estimate         = local_error_estimate();
+        step_factor =
+          std::clamp(0.9 *
+                       std::cbrt(tolerance / std::max(error_estimate, 1e-300)),
+                     0.2,
+                     2.);
+        if (error_estimate > tolerance &&
+            dt > integrator.minimum_time_step() * (1 + 1e-9))
+          {
+            rejected_by_estimate = true;
+            failure              = "the local error estimate " +
+                      format_number(error_estimate) +
+                      " exceeds Time integration/Error tolerance = " +
+                      format_number(tolerance);
+          }
+      }
     if (!failure.empty() || !result.converged)
       {
         structure_changed = true;
@@ -1148,6 +1194,10 @@ namespace ContactDynamics
                              double(dof_handler.n_dofs()),
                              double(mesh_changes),
                              energies.transfer})
+        row.push_back(x);
+    if (integrator.error_tolerance() > 0)
+      for (const double x :
+           {step == 0 ? 0. : error_estimate, double(rejected_steps)})
         row.push_back(x);
     const unsigned int interval = output_parameters.vtu_interval;
     try
@@ -1506,11 +1556,20 @@ namespace ContactDynamics
                                committed_active_nodes,
                                previous_active_nodes))
               adapt_mesh();
-            if (dt < time_step && ++good_since_cut >= 2)
+            if (integrator.error_tolerance() > 0)
+              dt =
+                std::clamp(dt_try * step_factor, minimum_time_step, time_step);
+            else if (dt < time_step && ++good_since_cut >= 2)
               {
                 dt             = std::min(2 * dt, time_step);
                 good_since_cut = 0;
               }
+          }
+        else if (rejected_by_estimate)
+          {
+            ++rejected_steps;
+            dt = std::max(dt_try * step_factor, minimum_time_step);
+            pcout << "  reducing the time step to " << dt << std::endl;
           }
         else
           {
@@ -1531,8 +1590,13 @@ namespace ContactDynamics
 
     pcout << "Finished at t = " << time << " after " << step << " steps ("
           << cumulative_newton_iterations << " Newton iterations, "
-          << time_step_cuts << " time step cuts). Results are in '"
-          << output_parameters.directory << "'." << std::endl;
+          << time_step_cuts << " time step cuts"
+          << (integrator.error_tolerance() > 0 ?
+                ", " + std::to_string(rejected_steps) +
+                  " steps rejected by the error estimate" :
+                std::string())
+          << "). Results are in '" << output_parameters.directory << "'."
+          << std::endl;
     timer->print_summary();
   }
 

@@ -248,6 +248,11 @@ namespace ContactDynamics
      */
     double
     apply_velocity_update();
+    /** The local error estimate of the trial step (Time
+     * integration/Error tolerance): the largest over the free displacement
+     * unknowns. Collective. */
+    double
+    local_error_estimate() const;
     void
     write_solution();
     void
@@ -349,14 +354,22 @@ namespace ContactDynamics
     VectorType    u_ghost, v_ghost, scratch_ghost[2];
     std::ofstream null_stream; // never opened: discards what it gets
 
-    double        time                         = 0;
-    double        dt_current                   = 0;
-    unsigned int  step                         = 0;
-    unsigned int  cumulative_newton_iterations = 0;
-    unsigned int  time_step_cuts               = 0;
-    unsigned int  linear_iterations            = 0; // GMRES, last step
-    bool          structure_changed            = true;
-    int           last_vtu_step                = -1;
+    double       time                         = 0;
+    double       dt_current                   = 0;
+    unsigned int step                         = 0;
+    unsigned int cumulative_newton_iterations = 0;
+    unsigned int time_step_cuts               = 0;
+    // adaptive time steps (Time integration/Error tolerance): the local
+    // error estimate of the last converged step, the factor for the next
+    // dt, whether the last attempt was rejected by it, and how many were
+    double        error_estimate       = 0;
+    double        step_factor          = 1;
+    bool          rejected_by_estimate = false;
+    unsigned int  rejected_steps       = 0;
+    IndexSet      displacement_dofs;     // locally owned
+    unsigned int  linear_iterations = 0; // GMRES, last step
+    bool          structure_changed = true;
+    int           last_vtu_step     = -1;
     std::string   last_failure; // why the last failed step failed
     std::string   linear_solver_name;
     EnergyBalance energies;

@@ -4,6 +4,7 @@
 #include <contact_dynamics/mechanics/time_integrator.h>
 #include <contact_dynamics/parameters.h>
 
+
 namespace ContactDynamics
 {
   namespace
@@ -58,6 +59,19 @@ namespace ContactDynamics
                       default_text(defaults.end_time_),
                       Patterns::Double(0),
                       "End time (>= 0).");
+    prm.declare_entry(
+      "Error tolerance",
+      default_text(defaults.error_tolerance_),
+      Patterns::Double(0),
+      "Adaptive time steps (newmark): the largest local error estimate of "
+      "a step, in units of length: max over the free displacement "
+      "unknowns of |dt^2 (beta - 1/6) (a_{n+1} - a_n)| (Zienkiewicz and "
+      "Xie). A step above it is solved again with a smaller dt, and each "
+      "accepted step sets the next dt to 0.9 (tolerance / estimate)^(1/3) "
+      "of its own (between 0.2 and 2 times), never above Time step and "
+      "never below Minimum time step (a step at the minimum is accepted "
+      "whatever its estimate). 0: no estimate; the step is only cut when "
+      "a Newton solve fails, and grows back to Time step.");
     prm.declare_entry("Minimum time step",
                       default_text(defaults.minimum_time_step_),
                       Patterns::Double(1e-300),
@@ -75,6 +89,13 @@ namespace ContactDynamics
     time_step_         = prm.get_double("Time step");
     end_time_          = prm.get_double("End time");
     minimum_time_step_ = prm.get_double("Minimum time step");
+    error_tolerance_   = prm.get_double("Error tolerance");
+    AssertThrow(error_tolerance_ == 0 || is_dynamic(),
+                ExcMessage("Time integration/Error tolerance = " +
+                           format_number(error_tolerance_) +
+                           " needs Scheme = newmark (a quasi-static run has "
+                           "no acceleration to estimate the error from); "
+                           "use 0."));
     AssertThrow(!is_dynamic() || 2 * beta_ >= gamma_ - 1e-12,
                 ExcMessage(
                   "Time integration/Newmark beta = " + format_number(beta_) +

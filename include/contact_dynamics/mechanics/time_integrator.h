@@ -79,6 +79,27 @@ namespace ContactDynamics
       return gamma_;
     }
 
+    /** The largest local error estimate a step may have (0: no
+     * estimate; the step is then only cut when Newton fails). */
+    double
+    error_tolerance() const
+    {
+      return error_tolerance_;
+    }
+
+    /**
+     * The local error of the displacement in a Newmark step (Zienkiewicz
+     * and Xie 1991): dt^2 (beta - 1/6) (a_{n+1} - a_n), the difference to
+     * the step with a linearly varying acceleration, one order higher
+     * (beta >= 1/4 here, so the factor is at least dt^2 / 12). Returns the
+     * factor of a_{n+1} - a_n.
+     */
+    double
+    local_error_factor(const double dt) const
+    {
+      return dt * dt * (beta_ - 1. / 6.);
+    }
+
     /** d a_{n+1} / d u_{n+1} */
     double
     acceleration_factor(const double dt) const
@@ -142,6 +163,7 @@ namespace ContactDynamics
     double    time_step_         = 0.025;
     double    end_time_          = 1.;
     double    minimum_time_step_ = 1e-6;
+    double    error_tolerance_   = 0;
   };
 } // namespace ContactDynamics
 
