@@ -1,0 +1,94 @@
+// Adaptive time steps (Time integration/Error tolerance = 1.5e-4, steps of
+// at most 0.025) on the elastic bar impact (shared/reference/benchmarks.md
+// section 3: L = 1, E = rho = 1, c = 1, v0 = 0.1, gap 0.01; exact: contact
+// at t = 0.1 for 2 L / c = 2, rebound at -v0, no energy lost):
+// - in free flight the acceleration is zero, the Newmark step is exact and
+//   its error estimate zero: the steps are the largest allowed;
+// - the impact makes the acceleration jump: the step to it is rejected and
+//   repeated smaller (below half the largest);
+// - while the wave runs through the bar the steps stay small, and after
+//   the bar left the wall they grow again (by at least 20 % on average);
+// - every accepted step above the minimum keeps its estimate within the
+//   tolerance;
+// - the physics of the impact is kept with the variable steps: contact
+//   duration 2 L / c within two of its steps, rebound velocity -v0 within
+//   2 %, energy within 1 % (as tests/bar_impact with fixed steps).
+#include <contact_dynamics/simulator.h>
+
+#include "tests.h"
+
+#include <algorithm>
+
+using namespace dealii;
+
+int
+main()
+{
+  initlog();
+  const double tolerance = 1.5e-4, largest = 0.025, v0 = 0.1;
+  double       rebound = 0;
+  auto         s       = run_shipped<ContactDynamics::Simulator<2>>(
+    "prm/examples/bar_impact.prm",
+    {{"Time integration/Time step", "0.025"},
+                   {"Time integration/Minimum time step", "0.0002"},
+                   {"Time integration/Error tolerance", "1.5e-4"},
+                   {"Output/Output directory", "output_adaptive_dt"},
+                   {"Output/VTU interval", "0"}},
+    [&](const ContactDynamics::Simulator<2> &simulator) {
+      rebound = mean_velocity_x(simulator, 0);
+    });
+  const auto &t = s.at("time"), &dt = s.at("dt"),
+             &estimate = s.at("error_estimate"),
+             &active   = s.at("active_contact_nodes");
+  const unsigned int n = t.size();
+
+  bool   flight_exact = true, within = true;
+  int    first = -1, last = -1;
+  double dt_contact = 0, dt_after = 0;
+  int    n_contact = 0, n_after = 0;
+  for (unsigned int i = 1; i < n; ++i)
+    {
+      if (active[i] > 0)
+        {
+          if (first < 0)
+            first = i;
+          last = i;
+        }
+      if (first < 0 && t[i] < 0.1 - 1e-9)
+        flight_exact = flight_exact && estimate[i] < 1e-15 &&
+                       std::abs(dt[i] - largest) < 1e-12;
+      if (dt[i] > 0.0002 * (1 + 1e-9))
+        within = within && estimate[i] <= tolerance;
+    }
+  for (int i = first + 1; i <= last; ++i, ++n_contact)
+    dt_contact += dt[i];
+  for (unsigned int i = last + 3; i < n; ++i, ++n_after)
+    dt_after += dt[i];
+  dt_contact /= n_contact;
+  dt_after /= n_after;
+
+  check_true("free flight: estimate 0, largest steps", flight_exact);
+  check_true("steps rejected at the impact",
+             s.at("rejected_steps")[first + 1] > 0);
+  check_true("the step after the impact below half the largest",
+             dt[first + 1] < 0.5 * largest);
+  check_true("after the bar left, the steps grow by 20 % or more",
+             dt_after > 1.2 * dt_contact);
+  check_true("accepted steps within the tolerance", within);
+  const double duration = t[last] - t[first] + dt[last];
+  check_close("contact duration 2 L / c (within two steps)",
+              duration,
+              2.,
+              2 * dt[last]);
+  check_close("rebound velocity / v0", rebound / v0, -1., 0.02);
+  const double e0 = s.at("kinetic_energy")[0];
+  check_close("energy after / before - 1",
+              (s.at("kinetic_energy")[n - 1] + s.at("elastic_energy")[n - 1]) /
+                  e0 -
+                1,
+              0.,
+              0.01);
+  deallog << std::setprecision(3) << "steps " << n - 1 << ", rejected "
+          << s.at("rejected_steps")[n - 1] << ", mean dt in contact "
+          << dt_contact << ", after " << dt_after << std::endl;
+}
