@@ -809,13 +809,33 @@ namespace ContactDynamics
 
   template <int dim>
   double
-  Simulator<dim>::local_error_estimate() const
+  Simulator<dim>::local_error_estimate()
   {
-    const double factor  = std::abs(integrator.local_error_factor(dt_current));
+    // The change of the acceleration over the step, a_{n+1} - a_n, from
+    // the mean accelerations of this step and the one before, so that the
+    // step-to-step alternation of the trapezoidal rule's acceleration after
+    // a velocity jump (undamped, at the step's Nyquist frequency, not a
+    // motion a smaller step resolves) does not count; the same for a
+    // smooth motion. The first step and the first on a new mesh use
+    // a_{n+1} - a_n.
+    const double dt = dt_current;
+    mean_acceleration.reinit(v);
+    for (const auto i : locally_owned)
+      mean_acceleration(i) = (v_new(i) - v(i)) / dt;
+    mean_acceleration.compress(VectorOperation::insert);
+    const bool history =
+      have_mean_acceleration && mean_acceleration_before.size() == v.size();
+    const double factor  = std::abs(integrator.local_error_factor(dt));
     double       largest = 0;
     for (const auto i : displacement_dofs)
       if (!increment_constraints.is_constrained(i))
-        largest = std::max(largest, factor * std::abs(a_new(i) - a(i)));
+        {
+          const double change =
+            history ? (mean_acceleration(i) - mean_acceleration_before(i)) * 2 *
+                        dt / (dt + dt_before) :
+                      a_new(i) - a(i);
+          largest = std::max(largest, factor * std::abs(change));
+        }
     return Utilities::MPI::max(largest, mpi_communicator);
   }
 
@@ -1152,6 +1172,12 @@ namespace ContactDynamics
         energies.frictional = contact->dissipated_energy();
         energies.obstacle   = contact->obstacle_work();
       }
+    if (integrator.error_tolerance() > 0)
+      {
+        mean_acceleration_before.swap(mean_acceleration);
+        dt_before              = dt;
+        have_mean_acceleration = true;
+      }
     u.swap(u_new);
     v.swap(v_new);
     a.swap(a_new);
@@ -1356,6 +1382,7 @@ namespace ContactDynamics
     const double energy_after = energies.kinetic + energies.elastic;
     energies.transfer += energy_after - energy_before;
     ++mesh_changes;
+    have_mean_acceleration = false;
     pcout << "  mesh at t = " << time << ": " << cells_before << " -> "
           << tria->n_global_active_cells() << " cells, " << unknowns_before
           << " -> " << dof_handler.n_dofs()

@@ -252,7 +252,7 @@ namespace ContactDynamics
      * integration/Error tolerance): the largest over the free displacement
      * unknowns. Collective. */
     double
-    local_error_estimate() const;
+    local_error_estimate();
     void
     write_solution();
     void
@@ -362,14 +362,19 @@ namespace ContactDynamics
     // adaptive time steps (Time integration/Error tolerance): the local
     // error estimate of the last converged step, the factor for the next
     // dt, whether the last attempt was rejected by it, and how many were
-    double        error_estimate       = 0;
-    double        step_factor          = 1;
-    bool          rejected_by_estimate = false;
-    unsigned int  rejected_steps       = 0;
-    IndexSet      displacement_dofs;     // locally owned
-    unsigned int  linear_iterations = 0; // GMRES, last step
-    bool          structure_changed = true;
-    int           last_vtu_step     = -1;
+    double       error_estimate       = 0;
+    double       step_factor          = 1;
+    bool         rejected_by_estimate = false;
+    unsigned int rejected_steps       = 0;
+    IndexSet     displacement_dofs; // locally owned
+    // the mean accelerations (v_{n+1} - v_n) / dt of the trial step and of
+    // the step before (its length dt_before), if that was on this mesh
+    VectorType    mean_acceleration, mean_acceleration_before;
+    double        dt_before              = 0;
+    bool          have_mean_acceleration = false;
+    unsigned int  linear_iterations      = 0; // GMRES, last step
+    bool          structure_changed      = true;
+    int           last_vtu_step          = -1;
     std::string   last_failure; // why the last failed step failed
     std::string   linear_solver_name;
     EnergyBalance energies;
