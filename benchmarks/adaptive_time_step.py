@@ -61,18 +61,25 @@ def counts(stats, wall):
                 dt_min=float(np.min(stats["dt"][1:])), dt_max=float(np.max(stats["dt"][1:])))
 
 
-def bar_impact(exe):
-    base = "prm/examples/bar_impact.prm"
+def step_runs(prefix, fixed, largest, minimum, tolerances):
+    """(directory name, label, prm changes) of the fixed-step runs and of
+    the adaptive ones (steps between minimum and largest)."""
     runs = [(f"fixed dt = {dt:g}", {"Time integration/Time step": str(dt),
                                     "Time integration/Minimum time step": str(dt / 16)})
-            for dt in (0.025, 0.0125, 0.00625, 0.003125)]
-    runs += [(f"adaptive, tolerance {tol:g}", {"Time integration/Time step": "0.025",
-                                               "Time integration/Minimum time step": "0.0002",
+            for dt in fixed]
+    runs += [(f"adaptive, tolerance {tol:g}", {"Time integration/Time step": str(largest),
+                                               "Time integration/Minimum time step": str(minimum),
                                                "Time integration/Error tolerance": str(tol)})
-             for tol in TOLERANCES["bar_impact"]]
+             for tol in tolerances]
+    return [(prefix + "_" + label.replace(" ", "_").replace(",", "").replace("=", ""), label, ch)
+            for label, ch in runs]
+
+
+def bar_impact(exe):
+    base = "prm/examples/bar_impact.prm"
     rows = []
-    for label, changes in runs:
-        name = "bar_" + label.replace(" ", "_").replace(",", "").replace("=", "")
+    for name, label, changes in step_runs("bar", (0.025, 0.0125, 0.00625, 0.003125), 0.025,
+                                          0.0002, TOLERANCES["bar_impact"]):
         directory, stats, wall = run(exe, name, base, changes)
         active = stats["active_contact_nodes"] > 0
         # the duration's resolution: the step after the last active row
@@ -89,16 +96,9 @@ def bouncing_block(exe):
     end = {"Time integration/End time": "6"}
     _, ref, _ = run(exe, "bb_reference", base, {**end, "Time integration/Time step": "0.003125",
                                                  "Time integration/Minimum time step": "1e-4"})
-    runs = [(f"fixed dt = {dt:g}", {"Time integration/Time step": str(dt),
-                                    "Time integration/Minimum time step": str(dt / 16)})
-            for dt in (0.05, 0.025, 0.0125, 0.00625)]
-    runs += [(f"adaptive, tolerance {tol:g}", {"Time integration/Time step": "0.05",
-                                               "Time integration/Minimum time step": "1e-4",
-                                               "Time integration/Error tolerance": str(tol)})
-             for tol in TOLERANCES["bouncing_block"]]
     rows = []
-    for label, changes in runs:
-        name = "bb_" + label.replace(" ", "_").replace(",", "").replace("=", "")
+    for name, label, changes in step_runs("bb", (0.05, 0.025, 0.0125, 0.00625), 0.05, 1e-4,
+                                          TOLERANCES["bouncing_block"]):
         directory, stats, wall = run(exe, name, base, {**end, **changes})
         rows.append(dict(label=label,
                          kinetic=avc.history_error(stats, ref, "kinetic_energy"),
