@@ -719,6 +719,8 @@ namespace ContactDynamics
     time_step_cuts               = 0;
     rejected_steps               = 0;
     error_estimate               = 0;
+    have_mean_acceleration       = false;
+    dt_before                    = 0;
     setup_system();
     apply_initial_conditions();
 
@@ -816,8 +818,8 @@ namespace ContactDynamics
     // step-to-step alternation of the trapezoidal rule's acceleration after
     // a velocity jump (undamped, at the step's Nyquist frequency, not a
     // motion a smaller step resolves) does not count; the same for a
-    // smooth motion. The first step and the first on a new mesh use
-    // a_{n+1} - a_n.
+    // smooth motion. The first step uses a_{n+1} - a_n; a mesh change
+    // transfers the last mean acceleration.
     const double dt = dt_current;
     mean_acceleration.reinit(v);
     for (const auto i : locally_owned)
@@ -825,15 +827,19 @@ namespace ContactDynamics
     mean_acceleration.compress(VectorOperation::insert);
     const bool history =
       have_mean_acceleration && mean_acceleration_before.size() == v.size();
+    // the mean acceleration (1 - gamma) a_n + gamma a_{n+1} belongs to
+    // t_n + gamma dt_n (to first order): the two are that far apart
+    const double gamma   = integrator.gamma();
+    const double scale   = dt / (gamma * dt + (1 - gamma) * dt_before);
     const double factor  = std::abs(integrator.local_error_factor(dt));
     double       largest = 0;
     for (const auto i : displacement_dofs)
       if (!increment_constraints.is_constrained(i))
         {
           const double change =
-            history ? (mean_acceleration(i) - mean_acceleration_before(i)) * 2 *
-                        dt / (dt + dt_before) :
-                      a_new(i) - a(i);
+            history ?
+              (mean_acceleration(i) - mean_acceleration_before(i)) * scale :
+              a_new(i) - a(i);
           largest = std::max(largest, factor * std::abs(change));
         }
     return Utilities::MPI::max(largest, mpi_communicator);
@@ -1136,10 +1142,9 @@ namespace ContactDynamics
         const double tolerance = integrator.error_tolerance();
         error_estimate         = local_error_estimate();
         step_factor =
-          std::clamp(0.9 *
-                       std::cbrt(tolerance / std::max(error_estimate, 1e-300)),
-                     0.2,
-                     2.);
+          error_estimate > 0 ?
+            std::clamp(0.9 * std::cbrt(tolerance / error_estimate), 0.2, 2.) :
+            2.;
         if (error_estimate > tolerance &&
             dt > integrator.minimum_time_step() * (1 + 1e-9))
           {
@@ -1333,22 +1338,26 @@ namespace ContactDynamics
     }
     const auto cells_before    = tria->n_global_active_cells();
     const auto unknowns_before = dof_handler.n_dofs();
-    // the committed state and the trial state of the step
-    const std::array<VectorType *, 4> state{{&u, &v, &a, &u_new}};
-    std::array<VectorType, 4>         old;
+    // the committed state and the trial state of the step, and the mean
+    // acceleration of the last step for the time-step error estimate
+    std::vector<VectorType *> state{&u, &v, &a, &u_new};
+    const bool                keep_history =
+      integrator.error_tolerance() > 0 && have_mean_acceleration;
+    if (keep_history)
+      state.push_back(&mean_acceleration_before);
+    std::vector<VectorType>         old(state.size());
+    std::vector<const VectorType *> old_pointers;
     for (unsigned int i = 0; i < state.size(); ++i)
-      ghosted(*state[i], old[i]);
+      old_pointers.push_back(&ghosted(*state[i], old[i]));
     parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
       dof_handler);
-    transfer.prepare_for_coarsening_and_refinement(
-      {&old[0], &old[1], &old[2], &old[3]});
+    transfer.prepare_for_coarsening_and_refinement(old_pointers);
     tria->execute_coarsening_and_refinement();
     t.stop();
 
     setup_system(false);
-    std::vector<VectorType *> out(state.begin(), state.end());
-    transfer.interpolate(out);
-    for (VectorType *x : out)
+    transfer.interpolate(state);
+    for (VectorType *x : state)
       {
         // the unused multipliers (interpolated next to surface nodes)
         for (const auto i : held_dofs &locally_owned)
@@ -1382,7 +1391,7 @@ namespace ContactDynamics
     const double energy_after = energies.kinetic + energies.elastic;
     energies.transfer += energy_after - energy_before;
     ++mesh_changes;
-    have_mean_acceleration = false;
+    have_mean_acceleration = keep_history;
     pcout << "  mesh at t = " << time << ": " << cells_before << " -> "
           << tria->n_global_active_cells() << " cells, " << unknowns_before
           << " -> " << dof_handler.n_dofs()
@@ -1564,6 +1573,7 @@ namespace ContactDynamics
     const double minimum_time_step = integrator.minimum_time_step();
     double       dt                = time_step;
     unsigned int good_since_cut    = 0;
+    unsigned int cut_since         = 2; // good steps since a Newton failure
     while (time < end_time - 1e-9 * time_step)
       {
         // SIGINT, SIGTERM: stop between steps, with complete outputs
@@ -1584,8 +1594,21 @@ namespace ContactDynamics
                                previous_active_nodes))
               adapt_mesh();
             if (integrator.error_tolerance() > 0)
-              dt =
-                std::clamp(dt_try * step_factor, minimum_time_step, time_step);
+              {
+                // after a Newton failure, two good steps before it grows
+                const bool recently_cut = cut_since < 2;
+                cut_since += recently_cut;
+                dt = std::clamp(dt_try * (recently_cut ?
+                                            std::min(step_factor, 1.) :
+                                            step_factor),
+                                minimum_time_step,
+                                time_step);
+                if (error_estimate > integrator.error_tolerance())
+                  pcout << "  accepted at the Minimum time step with the "
+                           "error estimate "
+                        << error_estimate << " above the tolerance"
+                        << std::endl;
+              }
             else if (dt < time_step && ++good_since_cut >= 2)
               {
                 dt             = std::min(2 * dt, time_step);
@@ -1602,6 +1625,7 @@ namespace ContactDynamics
           {
             ++time_step_cuts;
             good_since_cut = 0;
+            cut_since      = 0;
             dt             = dt_try / 2;
             if (dt < minimum_time_step)
               stop_run("The time step would have to be cut to " +

@@ -78,8 +78,8 @@ main()
 
   bool   flight_exact = true, within = true;
   int    first = -1, last = -1;
-  double dt_contact = 0, dt_after = 0;
-  int    n_contact = 0, n_after = 0;
+  double dt_contact = 0;
+  int    n_contact  = 0;
   for (unsigned int i = 1; i < n; ++i)
     {
       if (active[i] > 0)
@@ -96,10 +96,7 @@ main()
     }
   for (int i = first + 1; i <= last; ++i, ++n_contact)
     dt_contact += dt[i];
-  for (unsigned int i = last + 3; i < n; ++i, ++n_after)
-    dt_after += dt[i];
   dt_contact /= n_contact;
-  dt_after /= n_after;
 
   check_true("free flight: estimate 0, largest steps", flight_exact);
   check_true("steps rejected at the impact",
@@ -120,8 +117,9 @@ main()
                 1,
               0.,
               0.002);
-  check_true("fewer steps than the 240 of dt = 0.0125", n - 1 < 240);
-  deallog << std::setprecision(3) << "steps " << n - 1 << ", rejected "
-          << s.at("rejected_steps")[n - 1] << ", mean dt in contact "
-          << dt_contact << ", after " << dt_after << std::endl;
+  // (the counts go to "measured" only: one accept/reject decision could
+  // differ in the last digit on another machine or process count)
+  check_range("steps, fewer than the 240 of dt = 0.0125", n - 1, 1, 239);
+  record_measured("rejected steps", s.at("rejected_steps")[n - 1], 1, n);
+  record_measured("mean dt in contact", dt_contact, 0.0002, largest);
 }
