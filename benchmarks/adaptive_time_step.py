@@ -117,11 +117,12 @@ def main():
     args = parser.parse_args()
     exe = (ROOT / args.build / "contact-dynamics").resolve()
     sections = {}
-    cost = ("| steps | rejected | Newton iterations | dt min | dt max | wall time [s] |",
-            "|---|---|---|---|---|---|")
+    cost = ("| steps | rejected | solves | Newton iterations | dt min | dt max | wall time [s] |",
+            "|---|---|---|---|---|---|---|")
 
     def cost_cells(r):
-        return (f"| {r['steps']} | {r['rejected']} | {r['newton']} | {r['dt_min']:.3g} | "
+        return (f"| {r['steps']} | {r['rejected']} | {r['steps'] + r['rejected'] + r['cuts']} | "
+                f"{r['newton']} | {r['dt_min']:.3g} | "
                 f"{r['dt_max']:.3g} | {r['wall']:.1f} |")
 
     if args.only in (None, "bar_impact"):
