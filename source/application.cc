@@ -3,6 +3,7 @@
 
 #include <contact_dynamics/application.h>
 #include <contact_dynamics/contact/contact_formulation.h>
+#include <contact_dynamics/output/checkpoint.h>
 #include <contact_dynamics/output/postprocessing.h>
 #include <contact_dynamics/parallel.h>
 #include <contact_dynamics/scenes/scene_registry.h>
@@ -53,7 +54,8 @@ namespace ContactDynamics
     run(ParameterHandler  &prm,
         const std::string &filename,
         std::ostream      &screen,
-        const bool         validate_only)
+        const bool         validate_only,
+        const std::string &checkpoint)
     {
       const MPI_Comm comm = MPI_COMM_WORLD;
       // a run that stops destroys the simulator before the error leaves
@@ -89,7 +91,7 @@ namespace ContactDynamics
                 }
             });
             install_stop_handlers();
-            simulator->run();
+            simulator->run(checkpoint);
           }
         catch (...)
           {
@@ -254,18 +256,27 @@ namespace ContactDynamics
   void
   run_parameter_file(const std::string &filename,
                      std::ostream      &screen,
-                     const bool         validate_only)
+                     const bool         validate_only,
+                     const std::string &restart)
   {
+    // a restart finds its checkpoint, and its parameters unless given
+    std::string checkpoint, parameters = filename;
+    if (!restart.empty())
+      check_collectively(MPI_COMM_WORLD, [&]() {
+        checkpoint = Checkpoints::find(restart);
+        if (parameters.empty())
+          parameters = checkpoint + "/" + Checkpoints::parameter_file;
+      });
     ParameterHandler prm;
     unsigned int     dim = 2;
     // every process reads the file: an error is raised on all of them
     check_collectively(MPI_COMM_WORLD, [&]() {
-      dim = read_parameters(filename, prm);
+      dim = read_parameters(parameters, prm);
     });
     if (dim == 2)
-      run<2>(prm, filename, screen, validate_only);
+      run<2>(prm, parameters, screen, validate_only, checkpoint);
     else
-      run<3>(prm, filename, screen, validate_only);
+      run<3>(prm, parameters, screen, validate_only, checkpoint);
   }
 
   namespace
@@ -277,6 +288,13 @@ namespace ContactDynamics
           << "  contact-dynamics FILE.prm                run a simulation\n"
           << "  contact-dynamics --validate FILE.prm     check a parameter "
              "file without running it\n"
+          << "  contact-dynamics --restart DIR [FILE.prm]\n"
+          << "                                           continue from the "
+             "newest checkpoint in DIR\n"
+          << "                                           (an output "
+             "directory or a checkpoint), with\n"
+          << "                                           its parameters (or "
+             "FILE.prm: a later End time)\n"
           << "  contact-dynamics --print-parameters [FILE.prm]\n"
           << "                                           print every "
              "parameter, documented, with\n"
@@ -377,6 +395,18 @@ namespace ContactDynamics
           {
             one_file(1, "--validate: ");
             run_parameter_file(args[1], std::cout, true);
+            return 0;
+          }
+        if (args[0] == "--restart")
+          {
+            AssertThrow(args.size() == 2 || args.size() == 3,
+                        ExcCollective(
+                          "--restart: a directory and at most one parameter "
+                          "file expected. Run 'contact-dynamics --help'."));
+            run_parameter_file(args.size() == 3 ? args[2] : "",
+                               std::cout,
+                               false,
+                               args[1]);
             return 0;
           }
         AssertThrow(args[0].rfind("--", 0) != 0,

@@ -16,6 +16,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <contact_dynamics/output/checkpoint.h>
 #include <contact_dynamics/parameters.h>
 #include <contact_dynamics/simulator.h>
 
@@ -89,6 +90,11 @@ namespace ContactDynamics
     : pcout(screen, is_root(comm))
     , mpi_communicator(comm)
   {
+    {
+      std::ostringstream text;
+      prm.print_parameters(text, ParameterHandler::ShortPRM);
+      parameters_text = text.str();
+    }
     scene.parse_parameters(prm);
     layout                = scene.layout();
     layout.obstacle_names = obstacle_names(prm);
@@ -239,7 +245,8 @@ namespace ContactDynamics
             contact_writer =
               std::make_unique<ContactWriter<dim>>(*contact,
                                                    mpi_communicator,
-                                                   output_parameters.directory);
+                                                   output_parameters.directory,
+                                                   restarting);
           });
         else
           contact_writer->locate_monitored_nodes(*contact);
@@ -721,9 +728,38 @@ namespace ContactDynamics
     error_estimate               = 0;
     have_mean_acceleration       = false;
     dt_before                    = 0;
+    dt_next                      = integrator.time_step();
+    good_since_cut               = 0;
+    cut_since                    = 2;
+    last_checkpoint_step         = 0;
+    checkpoint_timer.restart();
     setup_system();
     apply_initial_conditions();
 
+    const std::vector<std::string> columns = statistics_columns();
+    check_collectively(mpi_communicator, [&]() {
+      if (is_root(mpi_communicator))
+        statistics =
+          std::make_unique<StatisticsFile>(output_parameters.directory +
+                                             "/statistics.csv",
+                                           columns);
+    });
+    solution_writer =
+      std::make_unique<SolutionWriter<dim>>(mpi_communicator,
+                                            output_parameters.directory,
+                                            contact ?
+                                              contact->extra_component_names() :
+                                              std::vector<std::string>());
+
+    print_problem_size();
+    output_step(0, 0., true);
+  }
+
+
+  template <int dim>
+  std::vector<std::string>
+  Simulator<dim>::statistics_columns() const
+  {
     std::vector<std::string> columns{"step",
                                      "time",
                                      "dt",
@@ -748,20 +784,13 @@ namespace ContactDynamics
     if (integrator.error_tolerance() > 0)
       for (const auto *c : {"error_estimate", "rejected_steps"})
         columns.emplace_back(c);
-    check_collectively(mpi_communicator, [&]() {
-      if (is_root(mpi_communicator))
-        statistics =
-          std::make_unique<StatisticsFile>(output_parameters.directory +
-                                             "/statistics.csv",
-                                           columns);
-    });
-    solution_writer =
-      std::make_unique<SolutionWriter<dim>>(mpi_communicator,
-                                            output_parameters.directory,
-                                            contact ?
-                                              contact->extra_component_names() :
-                                              std::vector<std::string>());
+    return columns;
+  }
 
+  template <int dim>
+  void
+  Simulator<dim>::print_problem_size()
+  {
     pcout << "Scene '" << scene.name()
           << "': " << triangulation->n_global_active_cells() << " cells, "
           << dof_handler.n_dofs() << " unknowns, " << bodies.size() << " bod"
@@ -791,7 +820,6 @@ namespace ContactDynamics
                 << nodes[p];
         pcout << std::endl;
       }
-    output_step(0, 0., true);
   }
 
   template <int dim>
@@ -1565,23 +1593,34 @@ namespace ContactDynamics
 
   template <int dim>
   void
-  Simulator<dim>::run()
+  Simulator<dim>::run(const std::string &checkpoint)
   {
-    initialize();
+    if (checkpoint.empty())
+      initialize();
+    else
+      restart(checkpoint);
     const double time_step         = integrator.time_step();
     const double end_time          = integrator.end_time();
     const double minimum_time_step = integrator.minimum_time_step();
-    double       dt                = time_step;
-    unsigned int good_since_cut    = 0;
-    unsigned int cut_since         = 2; // good steps since a Newton failure
+    double      &dt                = dt_next;
     while (time < end_time - 1e-9 * time_step)
       {
-        // SIGINT, SIGTERM: stop between steps, with complete outputs
+        // SIGINT, SIGTERM: stop between steps, with complete outputs and a
+        // checkpoint to continue from
         if (const int signal = stop_signal(mpi_communicator))
-          stop_run(std::string(signal == SIGINT  ? "Interrupted (SIGINT)." :
-                               signal == SIGTERM ? "Terminated (SIGTERM)." :
-                                                   "Stopped by a signal."),
-                   signal);
+          {
+            if (last_checkpoint_step != int(step))
+              write_checkpoint();
+            stop_run(std::string(signal == SIGINT  ? "Interrupted (SIGINT)." :
+                                 signal == SIGTERM ? "Terminated (SIGTERM)." :
+                                                     "Stopped by a signal.") +
+                       " A checkpoint of this step is in '" +
+                       Checkpoints::directory(output_parameters.directory,
+                                              step) +
+                       "' (continue with --restart " +
+                       output_parameters.directory + ").",
+                     signal);
+          }
         const double dt_try = std::min(dt, end_time - time);
         if (advance(dt_try))
           {
@@ -1614,6 +1653,15 @@ namespace ContactDynamics
                 dt             = std::min(2 * dt, time_step);
                 good_since_cut = 0;
               }
+            const unsigned int interval = output_parameters.checkpoint_interval;
+            const double       minutes  = output_parameters.checkpoint_wall_time;
+            // (the wall time of the first process decides for all)
+            if ((interval > 0 && step % interval == 0) ||
+                (minutes > 0 &&
+                 Utilities::MPI::broadcast(mpi_communicator,
+                                           checkpoint_timer.wall_time(),
+                                           0) >= 60 * minutes))
+              write_checkpoint();
           }
         else if (rejected_by_estimate)
           {

@@ -23,11 +23,15 @@ namespace ContactDynamics
   /**
    * Runs the simulation described by `filename`, screen output to `screen`.
    * With `validate_only`, stops after reading and checking everything.
+   * With `restart` (an output directory or a checkpoint), continues from
+   * its newest checkpoint; an empty `filename` then takes the parameters
+   * stored with it.
    */
   void
   run_parameter_file(const std::string &filename,
                      std::ostream      &screen,
-                     const bool         validate_only = false);
+                     const bool         validate_only = false,
+                     const std::string &restart       = "");
 
   /** The command line of the contact-dynamics executable; returns the exit
    * status. */

@@ -73,9 +73,13 @@ namespace ContactDynamics
               std::ostream     &screen,
               const MPI_Comm    comm = MPI_COMM_WORLD);
 
-    /** Runs to the end time; throws if a step cannot be completed. */
+    /**
+     * Runs to the end time; throws if a step cannot be completed. With
+     * `checkpoint` (a checkpoint directory, Checkpoints::find()), continues
+     * the run that wrote it instead of starting at t = 0.
+     */
     void
-    run();
+    run(const std::string &checkpoint = "");
 
     const EnergyBalance &
     energy() const
@@ -167,6 +171,22 @@ namespace ContactDynamics
     void
     initialize();
 
+    /**
+     * Instead of initialize(): the mesh, state, history and output
+     * positions of a checkpoint directory (written by write_checkpoint()
+     * with the same model parameters, on any number of processes).
+     */
+    void
+    restart(const std::string &checkpoint);
+
+    /**
+     * Writes a checkpoint of the last completed step to Output
+     * directory/checkpoints (collective; see Checkpoints) and keeps the
+     * last two.
+     */
+    void
+    write_checkpoint();
+
     /** One time step of size dt; false (state unchanged) if it failed. */
     bool
     advance(const double dt);
@@ -255,6 +275,19 @@ namespace ContactDynamics
     local_error_estimate();
     void
     write_solution();
+    /** The columns of statistics.csv. */
+    std::vector<std::string>
+    statistics_columns() const;
+    /** The scene, its size and the partition, on the screen. */
+    void
+    print_problem_size();
+    /** The vectors a checkpoint holds, in their order. */
+    std::vector<VectorType *>
+    checkpoint_vectors();
+    /** A replicated mesh: every degree of freedom in the order of the cells
+     * (the same on any number of processes), for a checkpoint. */
+    std::vector<types::global_dof_index>
+    cell_order_of_dofs() const;
     void
     output_step(const unsigned int newton_iterations,
                 const double       residual,
@@ -372,7 +405,18 @@ namespace ContactDynamics
     VectorType    mean_acceleration, mean_acceleration_before;
     double        dt_before              = 0;
     bool          have_mean_acceleration = false;
-    unsigned int  linear_iterations      = 0; // GMRES, last step
+    // the time-step controller of run(): the next dt, good steps since a
+    // Newton failure (two kinds of counting)
+    double       dt_next        = 0;
+    unsigned int good_since_cut = 0;
+    unsigned int cut_since      = 2;
+    // checkpoints: the parameters to store, the step of the last one and
+    // the wall time since; whether this run continues a checkpoint
+    std::string   parameters_text;
+    int           last_checkpoint_step = -1;
+    Timer         checkpoint_timer;
+    bool          restarting        = false;
+    unsigned int  linear_iterations = 0; // GMRES, last step
     bool          structure_changed      = true;
     int           last_vtu_step          = -1;
     std::string   last_failure; // why the last failed step failed

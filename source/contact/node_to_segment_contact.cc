@@ -3,8 +3,10 @@
 
 #include <contact_dynamics/contact/contact_ad.h>
 #include <contact_dynamics/contact/node_to_segment_contact.h>
+#include <contact_dynamics/output/checkpoint.h>
 #include <contact_dynamics/parameters.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -401,6 +403,37 @@ namespace ContactDynamics
     SurfaceContact<dim>::commit_step(u, old_u);
     // the faces of the converged state's projections (the last assembly)
     committed_face = trial_face;
+  }
+
+  template <int dim>
+  void
+  NodeToSegmentContact<dim>::save_history(CheckpointData &data) const
+  {
+    SurfaceContact<dim>::save_history(data);
+    std::vector<std::vector<unsigned int>> faces(this->pairs.size());
+    for (const auto &[p, nodes] : committed_face)
+      faces[p] = nodes;
+    this->save_per_process(data, "contact/faces", faces);
+  }
+
+  template <int dim>
+  void
+  NodeToSegmentContact<dim>::load_history(const CheckpointData &data,
+                                          const VectorType     &u)
+  {
+    SurfaceContact<dim>::load_history(data, u);
+    committed_face.clear();
+    // on another numbering the faces are searched anew
+    const auto maps = this->saved_node_map(data);
+    if (std::all_of(maps.begin(), maps.end(), [](const auto &m) {
+          return m.empty();
+        }))
+      {
+        const auto faces = this->load_per_process(data, "contact/faces");
+        for (unsigned int p = 0; p < faces.size(); ++p)
+          if (!faces[p].empty())
+            committed_face[p] = faces[p];
+      }
   }
 
   template class NodeToSegmentContact<2>;

@@ -6,6 +6,7 @@
 #include <contact_dynamics/contact/closest_point_3d.h>
 #include <contact_dynamics/contact/contact_search.h>
 #include <contact_dynamics/contact/surface_contact.h>
+#include <contact_dynamics/output/checkpoint.h>
 #include <contact_dynamics/parallel.h>
 #include <contact_dynamics/parameters.h>
 
@@ -1666,6 +1667,259 @@ namespace ContactDynamics
           << "; Contact/Initial penetration = allow: the contact pushes them "
              "apart, and the energy this creates appears in contact_work."
           << std::endl;
+  }
+
+  namespace
+  {
+    // a node's state in a checkpoint: every field, in this order
+    constexpr unsigned int n_saved_fields = 18;
+
+    void
+    pack(const ContactNodeState &n, double *x)
+    {
+      const double values[n_saved_fields] = {n.gap,
+                                             n.weight,
+                                             n.pressure,
+                                             n.tangential[0],
+                                             n.tangential[1],
+                                             n.slip_rate[0],
+                                             n.slip_rate[1],
+                                             double(n.projected),
+                                             double(n.active),
+                                             double(n.stick),
+                                             double(n.persistent),
+                                             n.gap_rate,
+                                             n.gap_acceleration,
+                                             n.velocity_rate,
+                                             n.held_gap,
+                                             n.held_rate,
+                                             n.held_acceleration,
+                                             0.};
+      std::copy(values, values + n_saved_fields, x);
+    }
+
+    void
+    unpack(const double *x, ContactNodeState &n)
+    {
+      n.gap               = x[0];
+      n.weight            = x[1];
+      n.pressure          = x[2];
+      n.tangential        = {{x[3], x[4]}};
+      n.slip_rate         = {{x[5], x[6]}};
+      n.projected         = x[7] > 0.5;
+      n.active            = x[8] > 0.5;
+      n.stick             = x[9] > 0.5;
+      n.persistent        = x[10] > 0.5;
+      n.gap_rate          = x[11];
+      n.gap_acceleration  = x[12];
+      n.velocity_rate     = x[13];
+      n.held_gap          = x[14];
+      n.held_rate         = x[15];
+      n.held_acceleration = x[16];
+    }
+
+    std::string
+    pair_key(const unsigned int p)
+    {
+      return "contact/pair " + std::to_string(p) + "/";
+    }
+  } // namespace
+
+  template <int dim>
+  std::vector<VectorType *>
+  SurfaceContact<dim>::history_vectors()
+  {
+    std::vector<VectorType *> vectors = work.committed_forces();
+    vectors.push_back(&gap_field);
+    for (auto &field : slip_field)
+      vectors.push_back(&field);
+    return vectors;
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::save_per_process(
+    CheckpointData                               &data,
+    const std::string                            &name,
+    const std::vector<std::vector<unsigned int>> &lists) const
+  {
+    std::vector<double> flat{double(lists.size())};
+    for (const auto &list : lists)
+      {
+        flat.push_back(list.size());
+        flat.insert(flat.end(), list.begin(), list.end());
+      }
+    const auto all = Utilities::MPI::gather(comm, flat, 0);
+    for (unsigned int r = 0; r < all.size(); ++r)
+      data.set(name + "/process " + std::to_string(r), all[r]);
+  }
+
+  template <int dim>
+  std::vector<std::vector<unsigned int>>
+  SurfaceContact<dim>::load_per_process(const CheckpointData &data,
+                                        const std::string    &name) const
+  {
+    std::vector<std::vector<unsigned int>> lists;
+    if (data.value("processes") != Utilities::MPI::n_mpi_processes(comm))
+      return lists;
+    const auto &flat = data.get(name + "/process " +
+                                std::to_string(
+                                  Utilities::MPI::this_mpi_process(comm)));
+    std::size_t i = 1;
+    lists.resize(flat.at(0));
+    for (auto &list : lists)
+      {
+        const std::size_t size = flat.at(i++);
+        AssertThrow(i + size <= flat.size(),
+                    ExcMessage("A checkpoint entry '" + name +
+                               "' is damaged."));
+        list.assign(flat.begin() + i, flat.begin() + i + size);
+        i += size;
+      }
+    return lists;
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::save_history(CheckpointData &data) const
+  {
+    data.set("contact/pairs", pairs.size());
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      {
+        const PairData     &pair = pairs[p];
+        const std::string   key  = pair_key(p);
+        const unsigned int  n    = pair.nodes.size();
+        std::vector<double> states(n_saved_fields * n, 0.), reference;
+        // each node from the process that owns it (zeros elsewhere)
+        for (unsigned int j = 0; j < n; ++j)
+          if (pair.owned_node[j])
+            pack(pair.nodes[j], &states[n_saved_fields * j]);
+        Utilities::MPI::sum(states, comm, states);
+        for (const auto &x : pair.secondary.reference)
+          reference.insert(reference.end(), x.begin_raw(), x.end_raw());
+        data.set(key + "nodes", states);
+        data.set(key + "reference", reference);
+        std::vector<double> reaction;
+        const auto         &r = pair.committed_reaction;
+        for (const auto *t : {&r.force, &r.friction_force})
+          reaction.insert(reaction.end(), t->begin_raw(), t->end_raw());
+        for (const auto *t : {&r.torque, &r.friction_torque})
+          reaction.insert(reaction.end(), t->begin_raw(), t->end_raw());
+        data.set(key + "reaction", reaction);
+        save_per_process(data, key + "pattern", pair.pattern);
+      }
+    data.set("contact/obstacle work",
+             {obstacle_work_done,
+              obstacle_friction_work,
+              obstacle_normal_step_work});
+    data.set("contact/work", {work.work(), work.dissipation()});
+  }
+
+  template <int dim>
+  std::vector<std::vector<unsigned int>>
+  SurfaceContact<dim>::saved_node_map(const CheckpointData &data) const
+  {
+    AssertThrow(data.value("contact/pairs") == pairs.size(),
+                ExcMessage("The checkpoint has " +
+                           format_number(data.value("contact/pairs")) +
+                           " contact pairs, the parameters " +
+                           std::to_string(pairs.size()) + "."));
+    std::vector<std::vector<unsigned int>> maps(pairs.size());
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      {
+        const auto  &nodes = pairs[p].secondary.reference;
+        const auto  &saved = data.get(pair_key(p) + "reference");
+        const double size  = saved.size() / double(dim);
+        AssertThrow(size == nodes.size(),
+                    ExcMessage("The checkpoint's contact pair '" +
+                               contact.pairs[p].name + "' has " +
+                               format_number(size) +
+                               " secondary nodes, this mesh " +
+                               std::to_string(nodes.size()) + "."));
+        bool same = true;
+        for (unsigned int j = 0; j < nodes.size() && same; ++j)
+          for (unsigned int d = 0; d < dim; ++d)
+            same = same && saved[dim * j + d] == nodes[j][d];
+        if (same)
+          continue;
+        std::map<std::array<double, dim>, unsigned int> index;
+        for (unsigned int j = 0; j < nodes.size(); ++j)
+          {
+            std::array<double, dim> x;
+            std::copy(nodes[j].begin_raw(), nodes[j].end_raw(), x.begin());
+            index[x] = j;
+          }
+        for (unsigned int k = 0; k < nodes.size(); ++k)
+          {
+            std::array<double, dim> x;
+            Point<dim>              where;
+            for (unsigned int d = 0; d < dim; ++d)
+              where[d] = x[d] = saved[dim * k + d];
+            const auto it = index.find(x);
+            AssertThrow(it != index.end(),
+                        ExcMessage("The checkpoint's contact pair '" +
+                                   contact.pairs[p].name +
+                                   "' has a secondary node at " +
+                                   coordinates(where) +
+                                   " that this mesh does not have."));
+            maps[p].push_back(it->second);
+          }
+      }
+    return maps;
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::load_history(const CheckpointData &data,
+                                    const VectorType     &u)
+  {
+    const auto maps = saved_node_map(data);
+    committed_u     = u;
+    // the next update_candidates() searches from this committed state
+    committed_is_next = false;
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      {
+        PairData          &pair = pairs[p];
+        const std::string  key  = pair_key(p);
+        const unsigned int n    = pair.nodes.size();
+        const auto        &states = data.get(key + "nodes", n_saved_fields * n);
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            const unsigned int j = maps[p].empty() ? k : maps[p][k];
+            unpack(&states[n_saved_fields * k], pair.nodes[j]);
+          }
+        for (unsigned int j = 0; j < n; ++j)
+          pair.position[j] = pair.secondary.position(j, u);
+        const auto &reaction = data.get(key + "reaction", 2 * dim + 6);
+        auto       &r        = pair.committed_reaction;
+        auto        x        = reaction.begin();
+        for (auto *t : {&r.force, &r.friction_force})
+          {
+            std::copy(x, x + dim, t->begin_raw());
+            x += dim;
+          }
+        for (auto *t : {&r.torque, &r.friction_torque})
+          {
+            std::copy(x, x + 3, t->begin_raw());
+            x += 3;
+          }
+        // the sparsity of the run that wrote it, if numbered as here
+        auto pattern = maps[p].empty() ?
+                         load_per_process(data, key + "pattern") :
+                         std::vector<std::vector<unsigned int>>();
+        if (pattern.size() == n_patches(pair))
+          pair.pattern = std::move(pattern);
+        else if (pair.obstacle)
+          pair.pattern.assign(n_patches(pair), {0});
+        else
+          pair.pattern = compute_candidates(pair, u, 2.0);
+      }
+    const auto &obstacle = data.get("contact/obstacle work", 3);
+    obstacle_work_done        = obstacle[0];
+    obstacle_friction_work    = obstacle[1];
+    obstacle_normal_step_work = obstacle[2];
+    const auto &totals        = data.get("contact/work", 2);
+    work.carry_totals(totals[0], totals[1]);
   }
 
   template class SurfaceContact<2>;

@@ -16,7 +16,8 @@ namespace ContactDynamics
   template <int dim>
   ContactWriter<dim>::ContactWriter(const ContactFormulation<dim> &contact,
                                     const MPI_Comm                 comm,
-                                    const std::string             &directory)
+                                    const std::string             &directory,
+                                    const bool                     append)
     : comm(comm)
     , directory(directory)
   {
@@ -24,8 +25,12 @@ namespace ContactDynamics
     if (directory.empty() || !is_root(comm))
       return;
     errno   = 0;
-    history = std::make_unique<std::ofstream>(history_name());
+    history = std::make_unique<std::ofstream>(history_name(),
+                                              append ? std::ios::app :
+                                                       std::ios::out);
     check_written(*history, history_name());
+    if (append)
+      return;
     *history << "time";
     for (const auto &m : monitored)
       {

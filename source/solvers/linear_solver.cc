@@ -140,6 +140,19 @@ namespace ContactDynamics
   }
 
   void
+  LinearSolver::reset()
+  {
+    release();
+    umfpack.clear();
+    klu.clear();
+    klu.pivot_anew();
+    amg.reset();
+    amg_matrix.reset();
+    iterations_after_build = 0;
+    rebuild_amg            = false;
+  }
+
+  void
   LinearSolver::factorize(const TrilinosWrappers::SparseMatrix &matrix)
   {
     release();

@@ -28,6 +28,7 @@ namespace ContactDynamics
   using namespace dealii;
   using VectorType = TrilinosWrappers::MPI::Vector;
   using MatrixType = TrilinosWrappers::SparseMatrix;
+  class CheckpointData;
 
   /** One secondary/primary surface pair; a side may join several surfaces. */
   struct ContactPair
@@ -255,6 +256,46 @@ namespace ContactDynamics
      */
     virtual void
     commit_step(const VectorType &u, const VectorType &old_u) = 0;
+
+    /**
+     * Checkpoints: vectors on the degrees of freedom that the history of the
+     * last committed step holds (its contact forces, the output fields);
+     * the simulator saves and restores them with the state, in this order.
+     */
+    virtual std::vector<VectorType *>
+    history_vectors()
+    {
+      return {};
+    }
+
+    /**
+     * Checkpoints: the history of the last committed step into `data`
+     * (complete on the first process, which writes it). Collective.
+     */
+    virtual void
+    save_history(CheckpointData &data) const
+    {
+      (void)data;
+      AssertThrow(false,
+                  ExcMessage("This contact formulation cannot write "
+                             "checkpoints."));
+    }
+
+    /**
+     * Checkpoints: after setup() on the checkpoint's mesh and with
+     * history_vectors() restored, the history of `data`; `u` is the
+     * committed state (ghosted). The nodes are found by their reference
+     * positions: the checkpoint may come from another number of processes.
+     */
+    virtual void
+    load_history(const CheckpointData &data, const VectorType &u)
+    {
+      (void)data;
+      (void)u;
+      AssertThrow(false,
+                  ExcMessage("This contact formulation cannot read "
+                             "checkpoints."));
+    }
 
     /**
      * Called for a converged step before commit_step(), at the state `u` of

@@ -102,6 +102,13 @@ namespace ContactDynamics
       last_normal_work += work;
     }
 
+    /** The forces of the last committed step (for a checkpoint). */
+    std::vector<TrilinosWrappers::MPI::Vector *>
+    committed_forces()
+    {
+      return {&force_committed, &friction_force_committed};
+    }
+
     /** Work of the contact forces on the bodies so far. */
     double
     work() const

@@ -44,6 +44,12 @@ namespace ContactDynamics
     void
     commit_step(const VectorType &u, const VectorType &old_u) override;
 
+    /** And the face memory (kept if the numbering is the saved one). */
+    void
+    save_history(CheckpointData &data) const override;
+    void
+    load_history(const CheckpointData &data, const VectorType &u) override;
+
   protected:
     using PairData = typename SurfaceContact<dim>::PairData;
 

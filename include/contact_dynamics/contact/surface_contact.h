@@ -152,6 +152,15 @@ namespace ContactDynamics
     void
     commit_step(const VectorType &u, const VectorType &old_u) override;
 
+    std::vector<VectorType *>
+    history_vectors() override;
+
+    void
+    save_history(CheckpointData &data) const override;
+
+    void
+    load_history(const CheckpointData &data, const VectorType &u) override;
+
     /** Places the rigid obstacles at the committed and the trial time. */
     void
     set_times(const double committed, const double trial) override;
@@ -479,6 +488,31 @@ namespace ContactDynamics
     ContactParameters         contact;
     ComplementarityParameters complementarity;
     std::vector<PairData>     pairs;
+
+    /**
+     * Checkpoints: per pair, the node of this mesh at each saved node (by
+     * reference position); empty if the numbering is the saved one. Throws
+     * if a saved node is not on this mesh.
+     */
+    std::vector<std::vector<unsigned int>>
+    saved_node_map(const CheckpointData &data) const;
+
+    /**
+     * Checkpoints: per-process lists of indices of a pair (`lists` on this
+     * process), all of them on the first process under `name`.
+     */
+    void
+    save_per_process(CheckpointData                               &data,
+                     const std::string                            &name,
+                     const std::vector<std::vector<unsigned int>> &lists) const;
+
+    /**
+     * The lists save_per_process() saved for this process, if the
+     * checkpoint comes from as many processes as there are now; else
+     * empty.
+     */
+    std::vector<std::vector<unsigned int>>
+    load_per_process(const CheckpointData &data, const std::string &name) const;
 
   private:
     /** The linear system an assembly adds to; constrained rows are skipped. */

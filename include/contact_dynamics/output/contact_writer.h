@@ -26,11 +26,12 @@ namespace ContactDynamics
     /**
      * After the contact's setup(): finds the secondary node nearest to each
      * monitored point and starts contact_history.csv (unless `directory` is
-     * empty).
+     * empty); `append`: a restarted run continues it.
      */
     ContactWriter(const ContactFormulation<dim> &contact,
                   const MPI_Comm                 comm,
-                  const std::string             &directory);
+                  const std::string             &directory,
+                  const bool                     append = false);
 
     /**
      * The secondary node nearest to each monitored point (again after a

@@ -24,6 +24,10 @@ namespace ContactDynamics
   {
     std::string  directory    = "output";
     unsigned int vtu_interval = 1;
+    // checkpoints: every so many steps, and after so many minutes of wall
+    // time since the last one (0: never)
+    unsigned int checkpoint_interval  = 0;
+    double       checkpoint_wall_time = 0;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -62,8 +66,10 @@ namespace ContactDynamics
   class StatisticsFile
   {
   public:
+    /** `append`: a restarted run continues the file (no header). */
     StatisticsFile(const std::string              &filename,
-                   const std::vector<std::string> &columns);
+                   const std::vector<std::string> &columns,
+                   const bool                      append = false);
 
     /** Values in the order of the columns; integers print as integers. */
     void
@@ -117,6 +123,19 @@ namespace ContactDynamics
      */
     void
     write_records(const double time, const unsigned int step);
+
+    /** The steps solution.pvd lists (for a checkpoint), and setting them
+     * (a restarted run). */
+    const std::vector<std::pair<double, std::string>> &
+    listed() const
+    {
+      return records;
+    }
+    void
+    set_listed(const std::vector<std::pair<double, std::string>> &list)
+    {
+      records = list;
+    }
 
   private:
     /** solution-NNNNN.vtu, or solution-NNNNN.P.vtu on several processes. */

@@ -117,6 +117,15 @@ namespace ContactDynamics
     void
     release();
 
+    /**
+     * Forgets everything kept from earlier solves: the factorization, the
+     * symbolic analysis, KLU's pivot order and the multigrid hierarchy. A
+     * run does this at each checkpoint, so that a run restarted there
+     * solves exactly as the one that wrote it.
+     */
+    void
+    reset();
+
   private:
     void
     factorize(const TrilinosWrappers::SparseMatrix &matrix);

@@ -152,6 +152,13 @@ namespace ContactDynamics
       linear_solver.set_near_null_space(std::move(modes), dofs_per_vertex);
     }
 
+    /** See LinearSolver::reset(). */
+    void
+    reset_linear_solver()
+    {
+      linear_solver.reset();
+    }
+
     /** See LinearSolver::release(). */
     void
     release_factorization()

@@ -1,0 +1,117 @@
+// Checkpoints: what a run needs to continue exactly where it stopped, as
+// named arrays of numbers and texts in one file, and the directories that
+// hold them (written under a temporary name, renamed when complete, the
+// last two kept).
+#ifndef contact_dynamics_output_checkpoint_h
+#define contact_dynamics_output_checkpoint_h
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ContactDynamics
+{
+  /**
+   * Named arrays of doubles (integers up to 2^53 are exact) and named texts.
+   * A missing or mis-sized entry on reading is an error that names the
+   * checkpoint and the entry.
+   */
+  class CheckpointData
+  {
+  public:
+    void
+    set(const std::string &name, const std::vector<double> &values)
+    {
+      numbers[name] = values;
+    }
+
+    void
+    set(const std::string &name, const double value)
+    {
+      numbers[name] = {value};
+    }
+
+    void
+    set_text(const std::string &name, const std::string &text)
+    {
+      texts[name] = text;
+    }
+
+    /** The array `name`; with `size` > 0 it must have that many entries. */
+    const std::vector<double> &
+    get(const std::string &name, const std::size_t size = 0) const;
+
+    /** A single number. */
+    double
+    value(const std::string &name) const
+    {
+      return get(name, 1)[0];
+    }
+
+    const std::string &
+    text(const std::string &name) const;
+
+    bool
+    has(const std::string &name) const
+    {
+      return numbers.count(name) > 0 || texts.count(name) > 0;
+    }
+
+    /** Binary, with a leading tag; throws with the file's name on failure. */
+    void
+    write(const std::string &filename) const;
+
+    void
+    read(const std::string &filename);
+
+  private:
+    std::map<std::string, std::vector<double>> numbers;
+    std::map<std::string, std::string>         texts;
+    std::string                                source; // for messages
+  };
+
+  /**
+   * The checkpoints of an output directory: `directory`/checkpoints/
+   * step-NNNNNNN, each complete (a directory being written carries the
+   * suffix .part until it is renamed).
+   */
+  namespace Checkpoints
+  {
+    /** The file in a checkpoint directory that holds the CheckpointData. */
+    inline const char *data_file = "state.bin";
+    /** The parameters of the run that wrote it. */
+    inline const char *parameter_file = "parameters.prm";
+    /** The prefix of the mesh files (a distributed mesh). */
+    inline const char *mesh_file = "mesh";
+
+    /** Where the checkpoint of `step` goes, and its temporary name. */
+    std::string
+    directory(const std::string &output_directory, const unsigned int step);
+
+    /**
+     * First process: removes a temporary directory left by a stopped run
+     * and creates `temporary` anew. Throws naming it.
+     */
+    void
+    create_temporary(const std::string &temporary);
+
+    /**
+     * First process: renames the complete `temporary` to `final` (replacing
+     * one of the same step) and removes all but the `keep` newest
+     * checkpoints and every other temporary directory.
+     */
+    void
+    commit(const std::string &temporary,
+           const std::string &final,
+           const unsigned int keep);
+
+    /**
+     * `path` if it holds a checkpoint, else the newest complete checkpoint
+     * under `path`/checkpoints; throws naming `path` if there is none.
+     */
+    std::string
+    find(const std::string &path);
+  } // namespace Checkpoints
+} // namespace ContactDynamics
+
+#endif

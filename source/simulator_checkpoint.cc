@@ -1,0 +1,378 @@
+// Checkpoints of the Simulator: what the next step depends on, written so
+// that a restart continues exactly (doc/restart.md).
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+
+#include <contact_dynamics/output/checkpoint.h>
+#include <contact_dynamics/parameters.h>
+#include <contact_dynamics/simulator.h>
+
+#include <deal.II/distributed/solution_transfer.h>
+#include <deal.II/distributed/tria.h>
+#include <filesystem>
+#include <fstream>
+
+namespace ContactDynamics
+{
+  namespace
+  {
+    // the output files a restarted run continues
+    const std::vector<std::string> continued_files{"statistics.csv",
+                                                   "contact_history.csv"};
+  } // namespace
+
+  template <int dim>
+  std::vector<VectorType *>
+  Simulator<dim>::checkpoint_vectors()
+  {
+    std::vector<VectorType *> vectors{&u, &v, &a, &residual_full_old};
+    if (have_mean_acceleration)
+      vectors.push_back(&mean_acceleration_before);
+    if (contact)
+      for (VectorType *x : contact->history_vectors())
+        vectors.push_back(x);
+    return vectors;
+  }
+
+  template <int dim>
+  std::vector<types::global_dof_index>
+  Simulator<dim>::cell_order_of_dofs() const
+  {
+    std::vector<types::global_dof_index> order, cell_dofs(fe->n_dofs_per_cell());
+    std::vector<bool>                    seen(dof_handler.n_dofs(), false);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(cell_dofs);
+        for (const auto i : cell_dofs)
+          if (!seen[i])
+            {
+              seen[i] = true;
+              order.push_back(i);
+            }
+      }
+    AssertThrow(order.size() == dof_handler.n_dofs(),
+                ExcInternalError("a degree of freedom on no cell"));
+    return order;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::write_checkpoint()
+  {
+    TimerOutput::Scope t(*timer, "checkpoint");
+    const bool         root = is_root(mpi_communicator);
+    const std::string  final =
+      Checkpoints::directory(output_parameters.directory, step);
+    const std::string temporary = final + ".part";
+    check_collectively(mpi_communicator, [&]() {
+      if (root)
+        Checkpoints::create_temporary(temporary);
+    });
+
+    CheckpointData data;
+    data.set("processes", Utilities::MPI::n_mpi_processes(mpi_communicator));
+    data.set("dimension", dim);
+    data.set("cells", triangulation->n_global_active_cells());
+    data.set("unknowns", dof_handler.n_dofs());
+    data.set("time", time);
+    data.set("step", step);
+    data.set("controller",
+             {dt_current,
+              dt_next,
+              double(good_since_cut),
+              double(cut_since),
+              double(time_step_cuts),
+              double(cumulative_newton_iterations),
+              double(rejected_steps),
+              error_estimate,
+              step_factor,
+              dt_before,
+              double(have_mean_acceleration)});
+    data.set("mesh",
+             {double(mesh_changes),
+              double(cell_limit_reported),
+              double(committed_active_nodes),
+              double(previous_active_nodes),
+              double(last_vtu_step)});
+    data.set("energies",
+             {energies.kinetic,
+              energies.elastic,
+              energies.dissipated,
+              energies.external,
+              energies.initial,
+              energies.frictional,
+              energies.obstacle,
+              energies.transfer});
+    // where the continued files end (their rows are flushed as written)
+    std::vector<double> sizes;
+    for (const auto &name : continued_files)
+      {
+        const std::string file = output_parameters.directory + "/" + name;
+        sizes.push_back(root && std::filesystem::exists(file) ?
+                          std::filesystem::file_size(file) :
+                          -1.);
+      }
+    data.set("output/file sizes", sizes);
+    {
+      std::vector<double> times;
+      std::string         names;
+      for (const auto &[t, name] : solution_writer->listed())
+        {
+          times.push_back(t);
+          names += name + "\n";
+        }
+      data.set("output/pvd times", times);
+      data.set_text("output/pvd files", names);
+    }
+    if (contact)
+      contact->save_history(data);
+
+    // the vectors: with the distributed mesh (its refinement and
+    // partition) or in the order of the cells of the replicated one
+    const std::vector<VectorType *> vectors = checkpoint_vectors();
+    data.set("vectors", vectors.size());
+    auto *distributed =
+      dynamic_cast<parallel::distributed::Triangulation<dim> *>(
+        triangulation.get());
+    if (distributed != nullptr)
+      {
+        std::vector<VectorType>         ghosts(vectors.size());
+        std::vector<const VectorType *> pointers;
+        for (unsigned int k = 0; k < vectors.size(); ++k)
+          pointers.push_back(&ghosted(*vectors[k], ghosts[k]));
+        parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
+          dof_handler);
+        transfer.prepare_for_serialization(pointers);
+        check_collectively(mpi_communicator, [&]() {
+          distributed->save(temporary + "/" + Checkpoints::mesh_file);
+        });
+      }
+    else
+      {
+        const auto order = cell_order_of_dofs();
+        VectorType all(locally_owned,
+                       complete_index_set(dof_handler.n_dofs()),
+                       mpi_communicator);
+        for (unsigned int k = 0; k < vectors.size(); ++k)
+          {
+            all = *vectors[k];
+            if (!root)
+              continue;
+            std::vector<double> values(order.size());
+            for (std::size_t i = 0; i < order.size(); ++i)
+              values[i] = all(order[i]);
+            data.set("vector " + std::to_string(k), values);
+          }
+      }
+    check_collectively(mpi_communicator, [&]() {
+      if (root)
+        {
+          data.write(temporary + "/" + Checkpoints::data_file);
+          write_file_atomically(temporary + "/" + Checkpoints::parameter_file,
+                                [&](std::ostream &out) {
+                                  out << parameters_text;
+                                });
+        }
+    });
+    // complete on every process: only now does it replace the older ones
+    check_collectively(mpi_communicator, [&]() {
+      if (root)
+        Checkpoints::commit(temporary, final, 2);
+    });
+    last_checkpoint_step = step;
+    checkpoint_timer.restart();
+    // a restart starts without the factorization, pivot order or
+    // multigrid hierarchy of earlier steps: so does this run
+    newton.reset_linear_solver();
+    structure_changed = true;
+    pcout << "  checkpoint of step " << step << " in '" << final << "'"
+          << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::restart(const std::string &checkpoint)
+  {
+    wall_timer.restart();
+    CheckpointData data;
+    check_collectively(mpi_communicator, [&]() {
+      data.read(checkpoint + "/" + Checkpoints::data_file);
+      AssertThrow(data.value("dimension") == dim,
+                  ExcMessage("The checkpoint '" + checkpoint + "' is " +
+                             format_number(data.value("dimension")) +
+                             "-dimensional, the parameters are " +
+                             std::to_string(dim) + "-dimensional."));
+    });
+    const auto mismatch = [&](const std::string &what,
+                              const double       saved,
+                              const double       here) {
+      AssertThrow(saved == here,
+                  ExcCollective(
+                    "The checkpoint '" + checkpoint + "' has " +
+                    format_number(saved) + " " + what +
+                    ", the mesh of these parameters " + format_number(here) +
+                    ": restart with the parameters of the run that wrote "
+                    "it (its " +
+                    Checkpoints::parameter_file +
+                    "; only the End time, the outputs and the solver "
+                    "settings may change)."));
+    };
+    restarting = true;
+    auto *distributed =
+      dynamic_cast<parallel::distributed::Triangulation<dim> *>(
+        triangulation.get());
+    if (distributed != nullptr)
+      {
+        dof_handler.clear();
+        distributed->clear();
+        scene.create_triangulation(*distributed);
+        check_collectively(mpi_communicator, [&]() {
+          distributed->load(checkpoint + "/" + Checkpoints::mesh_file);
+        });
+        // saved on as many processes: its partition; else balanced anew
+        if (data.value("processes") !=
+            Utilities::MPI::n_mpi_processes(mpi_communicator))
+          distributed->repartition();
+        dof_handler.reinit(*triangulation);
+      }
+    mismatch("cells",
+             data.value("cells"),
+             triangulation->n_global_active_cells());
+
+    time                         = data.value("time");
+    step                         = data.value("step");
+    const auto &controller       = data.get("controller", 11);
+    dt_current                   = controller[0];
+    dt_next                      = controller[1];
+    good_since_cut               = controller[2];
+    cut_since                    = controller[3];
+    time_step_cuts               = controller[4];
+    cumulative_newton_iterations = controller[5];
+    rejected_steps               = controller[6];
+    error_estimate               = controller[7];
+    step_factor                  = controller[8];
+    dt_before                    = controller[9];
+    have_mean_acceleration       = controller[10] != 0;
+    const auto &mesh             = data.get("mesh", 5);
+    mesh_changes                 = mesh[0];
+    cell_limit_reported          = mesh[1] != 0;
+    committed_active_nodes       = mesh[2];
+    previous_active_nodes        = mesh[3];
+    last_vtu_step                = mesh[4];
+    const auto &e                = data.get("energies", 8);
+    energies.kinetic             = e[0];
+    energies.elastic             = e[1];
+    energies.dissipated          = e[2];
+    energies.external            = e[3];
+    energies.initial             = e[4];
+    energies.frictional          = e[5];
+    energies.obstacle            = e[6];
+    energies.transfer            = e[7];
+    // an End time beyond the one of the run (its dt may be shorter)
+    dt_next = std::min(dt_next, integrator.time_step());
+
+    // the continued files end at this step: rows after it (written before
+    // the stop) go
+    const auto &sizes = data.get("output/file sizes", continued_files.size());
+    check_collectively(mpi_communicator, [&]() {
+      if (!is_root(mpi_communicator))
+        return;
+      create_output_directory(output_parameters.directory);
+      for (unsigned int k = 0; k < continued_files.size(); ++k)
+        {
+          if (sizes[k] < 0)
+            continue;
+          const std::string file =
+            output_parameters.directory + "/" + continued_files[k];
+          const double size = std::filesystem::exists(file) ?
+                                std::filesystem::file_size(file) :
+                                -1.;
+          AssertThrow(size >= sizes[k],
+                      ExcMessage(
+                        "Cannot continue '" + file + "' from the checkpoint '" +
+                        checkpoint + "': it " +
+                        (size < 0 ? std::string("does not exist") :
+                                    "has " + format_number(size) + " bytes") +
+                        ", the checkpoint needs its first " +
+                        format_number(sizes[k]) +
+                        " bytes (restart in the output directory of the run "
+                        "that wrote the checkpoint)."));
+          std::filesystem::resize_file(file, sizes[k]);
+        }
+    });
+
+    setup_system();
+    mismatch("unknowns", data.value("unknowns"), dof_handler.n_dofs());
+    std::vector<VectorType *> vectors = checkpoint_vectors();
+    mismatch("saved vectors", data.value("vectors"), vectors.size());
+    if (distributed != nullptr)
+      {
+        parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
+          dof_handler);
+        transfer.deserialize(vectors);
+      }
+    else
+      {
+        const auto order = cell_order_of_dofs();
+        for (unsigned int k = 0; k < vectors.size(); ++k)
+          {
+            const auto &values =
+              data.get("vector " + std::to_string(k), order.size());
+            for (std::size_t i = 0; i < order.size(); ++i)
+              if (locally_owned.is_element(order[i]))
+                (*vectors[k])(order[i]) = values[i];
+            vectors[k]->compress(VectorOperation::insert);
+          }
+      }
+    ghosted(u, u_ghost);
+    ghosted(v, v_ghost);
+    if (contact)
+      {
+        contact->load_history(data, u_ghost);
+        setup_sparsity();
+      }
+    structure_changed = true;
+
+    check_collectively(mpi_communicator, [&]() {
+      if (is_root(mpi_communicator))
+        statistics =
+          std::make_unique<StatisticsFile>(output_parameters.directory +
+                                             "/statistics.csv",
+                                           statistics_columns(),
+                                           true);
+    });
+    solution_writer =
+      std::make_unique<SolutionWriter<dim>>(mpi_communicator,
+                                            output_parameters.directory,
+                                            contact ?
+                                              contact->extra_component_names() :
+                                              std::vector<std::string>());
+    {
+      const auto &times = data.get("output/pvd times");
+      std::vector<std::pair<double, std::string>> listed;
+      std::istringstream names(data.text("output/pvd files"));
+      std::string        name;
+      for (const double t : times)
+        {
+          std::getline(names, name);
+          listed.emplace_back(t, name);
+        }
+      solution_writer->set_listed(listed);
+    }
+    print_problem_size();
+    pcout << "Restarted from '" << checkpoint << "' at step " << step
+          << ", t = " << time << std::endl;
+    last_checkpoint_step = step;
+    checkpoint_timer.restart();
+  }
+
+#define INSTANTIATE(dim)                                                   \
+  template std::vector<VectorType *> Simulator<dim>::checkpoint_vectors(); \
+  template std::vector<types::global_dof_index>                           \
+                Simulator<dim>::cell_order_of_dofs() const;                \
+  template void Simulator<dim>::write_checkpoint();                       \
+  template void Simulator<dim>::restart(const std::string &);
+  INSTANTIATE(2)
+  INSTANTIATE(3)
+#undef INSTANTIATE
+} // namespace ContactDynamics
