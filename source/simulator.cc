@@ -239,8 +239,9 @@ namespace ContactDynamics
         else
           contact->remesh(dof_handler);
         locally_relevant.add_indices(contact->surface_dofs());
-        // the first process opens contact_history.csv
-        if (first)
+        // the first process opens contact_history.csv (a restart continues
+        // it; a reload at a checkpoint keeps it open)
+        if (first && !contact_writer)
           check_collectively(mpi_communicator, [&]() {
             contact_writer =
               std::make_unique<ContactWriter<dim>>(*contact,

@@ -185,6 +185,17 @@ namespace ContactDynamics
     // multigrid hierarchy of earlier steps: so does this run
     newton.reset_linear_solver();
     structure_changed = true;
+    // and on a distributed mesh with the cells in the order a load gives
+    // them (refinement and coarsening leave another order, and the sums
+    // of the assembly follow it): this run continues from the checkpoint
+    if (distributed != nullptr)
+      {
+        CheckpointData saved;
+        check_collectively(mpi_communicator, [&]() {
+          saved.read(final + "/" + Checkpoints::data_file);
+        });
+        load_checkpoint(final, saved);
+      }
     pcout << "  checkpoint of step " << step << " in '" << final << "'"
           << std::endl;
   }
@@ -203,6 +214,74 @@ namespace ContactDynamics
                              "-dimensional, the parameters are " +
                              std::to_string(dim) + "-dimensional."));
     });
+    restarting = true;
+    // the continued files end at this step: rows after it (written before
+    // the stop) go
+    const auto &sizes = data.get("output/file sizes", continued_files.size());
+    check_collectively(mpi_communicator, [&]() {
+      if (!is_root(mpi_communicator))
+        return;
+      create_output_directory(output_parameters.directory);
+      for (unsigned int k = 0; k < continued_files.size(); ++k)
+        {
+          if (sizes[k] < 0)
+            continue;
+          const std::string file =
+            output_parameters.directory + "/" + continued_files[k];
+          const double size = std::filesystem::exists(file) ?
+                                std::filesystem::file_size(file) :
+                                -1.;
+          AssertThrow(size >= sizes[k],
+                      ExcMessage(
+                        "Cannot continue '" + file + "' from the checkpoint '" +
+                        checkpoint + "': it " +
+                        (size < 0 ? std::string("does not exist") :
+                                    "has " + format_number(size) + " bytes") +
+                        ", the checkpoint needs its first " +
+                        format_number(sizes[k]) +
+                        " bytes (restart in the output directory of the run "
+                        "that wrote the checkpoint)."));
+          std::filesystem::resize_file(file, sizes[k]);
+        }
+    });
+    load_checkpoint(checkpoint, data);
+
+    check_collectively(mpi_communicator, [&]() {
+      if (is_root(mpi_communicator))
+        statistics =
+          std::make_unique<StatisticsFile>(output_parameters.directory +
+                                             "/statistics.csv",
+                                           statistics_columns(),
+                                           true);
+    });
+    solution_writer =
+      std::make_unique<SolutionWriter<dim>>(mpi_communicator,
+                                            output_parameters.directory,
+                                            contact ?
+                                              contact->extra_component_names() :
+                                              std::vector<std::string>());
+    {
+      const auto &times = data.get("output/pvd times");
+      std::vector<std::pair<double, std::string>> listed;
+      std::istringstream names(data.text("output/pvd files"));
+      std::string        name;
+      for (const double t : times)
+        {
+          std::getline(names, name);
+          listed.emplace_back(t, name);
+        }
+      solution_writer->set_listed(listed);
+    }
+    print_problem_size();
+    pcout << "Restarted from '" << checkpoint << "' at step " << step
+          << ", t = " << time << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::load_checkpoint(const std::string    &checkpoint,
+                                  const CheckpointData &data)
+  {
     const auto mismatch = [&](const std::string &what,
                               const double       saved,
                               const double       here) {
@@ -217,7 +296,6 @@ namespace ContactDynamics
                     "; only the End time, the outputs and the solver "
                     "settings may change)."));
     };
-    restarting = true;
     auto *distributed =
       dynamic_cast<parallel::distributed::Triangulation<dim> *>(
         triangulation.get());
@@ -229,10 +307,9 @@ namespace ContactDynamics
         check_collectively(mpi_communicator, [&]() {
           distributed->load(checkpoint + "/" + Checkpoints::mesh_file);
         });
-        // saved on as many processes: its partition; else balanced anew
-        if (data.value("processes") !=
-            Utilities::MPI::n_mpi_processes(mpi_communicator))
-          distributed->repartition();
+        // saved on as many processes: its partition; else p4est balances
+        // the cells (unweighted until the next mesh change: repartition()
+        // here would drop the vectors attached to the loaded mesh)
         dof_handler.reinit(*triangulation);
       }
     mismatch("cells",
@@ -268,41 +345,13 @@ namespace ContactDynamics
     energies.frictional          = e[5];
     energies.obstacle            = e[6];
     energies.transfer            = e[7];
-    // an End time beyond the one of the run (its dt may be shorter)
+    // a shorter Time step than the run's (the solver settings may change)
     dt_next = std::min(dt_next, integrator.time_step());
-
-    // the continued files end at this step: rows after it (written before
-    // the stop) go
-    const auto &sizes = data.get("output/file sizes", continued_files.size());
-    check_collectively(mpi_communicator, [&]() {
-      if (!is_root(mpi_communicator))
-        return;
-      create_output_directory(output_parameters.directory);
-      for (unsigned int k = 0; k < continued_files.size(); ++k)
-        {
-          if (sizes[k] < 0)
-            continue;
-          const std::string file =
-            output_parameters.directory + "/" + continued_files[k];
-          const double size = std::filesystem::exists(file) ?
-                                std::filesystem::file_size(file) :
-                                -1.;
-          AssertThrow(size >= sizes[k],
-                      ExcMessage(
-                        "Cannot continue '" + file + "' from the checkpoint '" +
-                        checkpoint + "': it " +
-                        (size < 0 ? std::string("does not exist") :
-                                    "has " + format_number(size) + " bytes") +
-                        ", the checkpoint needs its first " +
-                        format_number(sizes[k]) +
-                        " bytes (restart in the output directory of the run "
-                        "that wrote the checkpoint)."));
-          std::filesystem::resize_file(file, sizes[k]);
-        }
-    });
 
     setup_system();
     mismatch("unknowns", data.value("unknowns"), dof_handler.n_dofs());
+    if (have_mean_acceleration)
+      mean_acceleration_before.reinit(v);
     std::vector<VectorType *> vectors = checkpoint_vectors();
     mismatch("saved vectors", data.value("vectors"), vectors.size());
     if (distributed != nullptr)
@@ -331,37 +380,7 @@ namespace ContactDynamics
         contact->load_history(data, u_ghost);
         setup_sparsity();
       }
-    structure_changed = true;
-
-    check_collectively(mpi_communicator, [&]() {
-      if (is_root(mpi_communicator))
-        statistics =
-          std::make_unique<StatisticsFile>(output_parameters.directory +
-                                             "/statistics.csv",
-                                           statistics_columns(),
-                                           true);
-    });
-    solution_writer =
-      std::make_unique<SolutionWriter<dim>>(mpi_communicator,
-                                            output_parameters.directory,
-                                            contact ?
-                                              contact->extra_component_names() :
-                                              std::vector<std::string>());
-    {
-      const auto &times = data.get("output/pvd times");
-      std::vector<std::pair<double, std::string>> listed;
-      std::istringstream names(data.text("output/pvd files"));
-      std::string        name;
-      for (const double t : times)
-        {
-          std::getline(names, name);
-          listed.emplace_back(t, name);
-        }
-      solution_writer->set_listed(listed);
-    }
-    print_problem_size();
-    pcout << "Restarted from '" << checkpoint << "' at step " << step
-          << ", t = " << time << std::endl;
+    structure_changed    = true;
     last_checkpoint_step = step;
     checkpoint_timer.restart();
   }
@@ -371,7 +390,9 @@ namespace ContactDynamics
   template std::vector<types::global_dof_index>                           \
                 Simulator<dim>::cell_order_of_dofs() const;                \
   template void Simulator<dim>::write_checkpoint();                       \
-  template void Simulator<dim>::restart(const std::string &);
+  template void Simulator<dim>::restart(const std::string &);             \
+  template void Simulator<dim>::load_checkpoint(const std::string &,      \
+                                                const CheckpointData &);
   INSTANTIATE(2)
   INSTANTIATE(3)
 #undef INSTANTIATE

@@ -281,6 +281,10 @@ namespace ContactDynamics
     /** The scene, its size and the partition, on the screen. */
     void
     print_problem_size();
+    /** The mesh, state and history of a checkpoint (`data`, read from
+     * `checkpoint`); the output files are left as they are. */
+    void
+    load_checkpoint(const std::string &checkpoint, const CheckpointData &data);
     /** The vectors a checkpoint holds, in their order. */
     std::vector<VectorType *>
     checkpoint_vectors();
