@@ -204,6 +204,13 @@ namespace ContactDynamics
             complete.push_back(entry.path());
         }
       std::sort(complete.begin(), complete.end());
+      // those of later steps continue an abandoned run (this one restarted
+      // from an earlier checkpoint, and its files no longer reach them)
+      while (!complete.empty() && complete.back() > fs::path(final))
+        {
+          fs::remove_all(complete.back(), error);
+          complete.pop_back();
+        }
       for (std::size_t i = 0; i + keep < complete.size(); ++i)
         fs::remove_all(complete[i], error);
     }

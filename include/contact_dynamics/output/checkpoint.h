@@ -98,7 +98,9 @@ namespace ContactDynamics
     /**
      * First process: renames the complete `temporary` to `final` (replacing
      * one of the same step) and removes all but the `keep` newest
-     * checkpoints and every other temporary directory.
+     * checkpoints up to it, those of later steps (a run restarted from an
+     * earlier checkpoint abandons them) and every other temporary
+     * directory.
      */
     void
     commit(const std::string &temporary,
