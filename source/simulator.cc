@@ -1576,7 +1576,9 @@ namespace ContactDynamics
 
   template <int dim>
   void
-  Simulator<dim>::stop_run(const std::string &reason, const int signal)
+  Simulator<dim>::stop_run(const std::string &reason,
+                           const int          signal,
+                           const std::string &epilogue)
   {
     // the last completed step's VTU files, if the interval skipped them
     const bool vtu = output_parameters.vtu_interval > 0;
@@ -1586,7 +1588,8 @@ namespace ContactDynamics
     message << reason << " The run stops at step " << step << ", t = " << time
             << "; statistics.csv" << (contact ? ", contact_history.csv" : "")
             << (vtu ? " and the VTU files" : "") << " in '"
-            << output_parameters.directory << "' are complete up to this step.";
+            << output_parameters.directory << "' are complete up to this step."
+            << epilogue;
     if (signal != 0)
       AssertThrow(false, ExcStopped(message.str(), signal));
     AssertThrow(false, ExcCollective(message.str()));
@@ -1612,15 +1615,15 @@ namespace ContactDynamics
           {
             if (last_checkpoint_step != int(step))
               write_checkpoint();
-            stop_run(std::string(signal == SIGINT  ? "Interrupted (SIGINT)." :
-                                 signal == SIGTERM ? "Terminated (SIGTERM)." :
-                                                     "Stopped by a signal.") +
-                       " A checkpoint of this step is in '" +
+            stop_run(signal == SIGINT  ? "Interrupted (SIGINT)." :
+                     signal == SIGTERM ? "Terminated (SIGTERM)." :
+                                         "Stopped by a signal.",
+                     signal,
+                     " A checkpoint of this step is in '" +
                        Checkpoints::directory(output_parameters.directory,
                                               step) +
-                       "' (continue with --restart " +
-                       output_parameters.directory + ").",
-                     signal);
+                       "': 'contact-dynamics --restart " +
+                       output_parameters.directory + "' continues the run.");
           }
         const double dt_try = std::min(dt, end_time - time);
         if (advance(dt_try))

@@ -325,10 +325,12 @@ namespace ContactDynamics
     /**
      * Ends the run at the last completed step: writes its VTU files if the
      * interval skipped them, then throws ExcCollective with `reason` and
-     * where the outputs are (or ExcStopped for a signal).
+     * where the outputs are (or ExcStopped for a signal), then `epilogue`.
      */
     [[noreturn]] void
-    stop_run(const std::string &reason, const int signal = 0);
+    stop_run(const std::string &reason,
+             const int          signal   = 0,
+             const std::string &epilogue = "");
 
     ConditionalOStream pcout;
     // created last by the constructor: a TimerOutput destroyed by an
