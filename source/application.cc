@@ -79,8 +79,9 @@ namespace ContactDynamics
             const std::string directory = prm.get("Output directory");
             prm.leave_subsection();
             // the first process writes; every process learns if it failed
+            // (a restart writes it once it has checked the parameters)
             check_collectively(comm, [&]() {
-              if (is_root(comm))
+              if (is_root(comm) && checkpoint.empty())
                 {
                   create_output_directory(directory);
                   write_file_atomically(
@@ -272,6 +273,17 @@ namespace ContactDynamics
     // every process reads the file: an error is raised on all of them
     check_collectively(MPI_COMM_WORLD, [&]() {
       dim = read_parameters(parameters, prm);
+      // the run's own parameters continue where the checkpoint is, not
+      // where its output directory was relative to
+      const std::filesystem::path where(checkpoint);
+      if (!checkpoint.empty() && filename.empty() &&
+          where.parent_path().filename() == "checkpoints")
+        {
+          prm.enter_subsection("Output");
+          prm.set("Output directory",
+                  where.parent_path().parent_path().string());
+          prm.leave_subsection();
+        }
     });
     if (dim == 2)
       run<2>(prm, parameters, screen, validate_only, checkpoint);

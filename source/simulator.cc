@@ -24,6 +24,7 @@
 #include <array>
 #include <cmath>
 #include <csignal>
+#include <filesystem>
 #include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria.h>
 #include <iomanip>
@@ -719,7 +720,15 @@ namespace ContactDynamics
     wall_timer.restart();
     check_collectively(mpi_communicator, [&]() {
       if (is_root(mpi_communicator))
-        create_output_directory(output_parameters.directory);
+        {
+          create_output_directory(output_parameters.directory);
+          // a new run: checkpoints of an earlier one here would continue
+          // that run against this run's files
+          std::error_code error;
+          std::filesystem::remove_all(output_parameters.directory +
+                                        "/checkpoints",
+                                      error);
+        }
     });
     time                         = 0;
     step                         = 0;
@@ -732,7 +741,8 @@ namespace ContactDynamics
     dt_next                      = integrator.time_step();
     good_since_cut               = 0;
     cut_since                    = 2;
-    last_checkpoint_step         = 0;
+    last_checkpoint_step         = -1;
+    wall_time_before             = 0;
     checkpoint_timer.restart();
     setup_system();
     apply_initial_conditions();
@@ -1242,7 +1252,7 @@ namespace ContactDynamics
                             energies.dissipated,
                             energies.external,
                             energies.error(),
-                            wall_timer.wall_time(),
+                            wall_time_before + wall_timer.wall_time(),
                             final_residual,
                             double(time_step_cuts),
                             double(step == 0 ? 0 : linear_iterations)};

@@ -9,8 +9,11 @@
 
 #include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria.h>
+#include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 namespace ContactDynamics
 {
@@ -19,6 +22,58 @@ namespace ContactDynamics
     // the output files a restarted run continues
     const std::vector<std::string> continued_files{"statistics.csv",
                                                    "contact_history.csv"};
+
+    // what a restart may change (the model must stay)
+    const std::vector<std::string> changeable{
+      "Time integration/End time",
+      "Time integration/Time step",
+      "Time integration/Minimum time step",
+      "Time integration/Error tolerance",
+      "Output/",
+      "Nonlinear solver/",
+      "Parallel/Partitioner",
+      "Parallel/Contact cell weight"};
+
+    std::string
+    joined(const std::vector<std::string> &parts, const std::string &separator)
+    {
+      std::string text;
+      for (const auto &p : parts)
+        text += (text.empty() ? "" : separator) + p;
+      return text;
+    }
+
+    // the coarse mesh's cells and the sum of their vertices' coordinates
+    template <int dim>
+    std::vector<double>
+    coarse_mesh_signature(const Triangulation<dim> &triangulation)
+    {
+      double sum = 0;
+      for (const auto &cell : triangulation.cell_iterators_on_level(0))
+        for (const unsigned int v : cell->vertex_indices())
+          for (unsigned int d = 0; d < dim; ++d)
+            sum += cell->vertex(v)[d];
+      return {double(triangulation.n_cells(0)), sum};
+    }
+
+    // an error the same on every process (it comes from the same data)
+    template <typename F>
+    void
+    same_on_every_process(const F &f)
+    {
+      try
+        {
+          f();
+        }
+      catch (const ExcCollective &)
+        {
+          throw;
+        }
+      catch (const std::exception &e)
+        {
+          AssertThrow(false, ExcCollective(exception_message(e)));
+        }
+    }
   } // namespace
 
   template <int dim>
@@ -103,16 +158,25 @@ namespace ContactDynamics
               energies.frictional,
               energies.obstacle,
               energies.transfer});
-    // where the continued files end (their rows are flushed as written)
+    data.set("wall time", wall_time_before + wall_timer.wall_time());
+    data.set("coarse mesh", coarse_mesh_signature(*triangulation));
+    data.set_text("parameters", parameters_text);
+    data.set_text("statistics columns", joined(statistics_columns(), ","));
+    // where the continued files end (their rows are flushed as written),
+    // and what they end with
     std::vector<double> sizes;
+    std::string         hashes;
     for (const auto &name : continued_files)
       {
         const std::string file = output_parameters.directory + "/" + name;
-        sizes.push_back(root && std::filesystem::exists(file) ?
-                          std::filesystem::file_size(file) :
-                          -1.);
+        std::error_code   error;
+        const auto        size = std::filesystem::file_size(file, error);
+        sizes.push_back(root && !error ? double(size) : -1.);
+        hashes += (root && !error ? Checkpoints::tail_hash(file, size) : "") +
+                  "\n";
       }
     data.set("output/file sizes", sizes);
+    data.set_text("output/file hashes", hashes);
     {
       std::vector<double> times;
       std::string         names;
@@ -164,6 +228,10 @@ namespace ContactDynamics
             data.set("vector " + std::to_string(k), values);
           }
       }
+    // for the test of a kill during a write (tests/CMakeLists.txt)
+    if (const char *pause = std::getenv("CONTACT_DYNAMICS_CHECKPOINT_PAUSE"))
+      std::this_thread::sleep_for(
+        std::chrono::duration<double>(std::atof(pause)));
     check_collectively(mpi_communicator, [&]() {
       if (root)
         {
@@ -206,6 +274,7 @@ namespace ContactDynamics
   {
     wall_timer.restart();
     CheckpointData data;
+    // everything is checked before any file is touched
     check_collectively(mpi_communicator, [&]() {
       data.read(checkpoint + "/" + Checkpoints::data_file);
       AssertThrow(data.value("dimension") == dim,
@@ -213,38 +282,100 @@ namespace ContactDynamics
                              format_number(data.value("dimension")) +
                              "-dimensional, the parameters are " +
                              std::to_string(dim) + "-dimensional."));
+      const auto changed = Checkpoints::changed_entries(data.text("parameters"),
+                                                        parameters_text,
+                                                        changeable);
+      AssertThrow(changed.empty(),
+                  ExcMessage(
+                    "The parameters differ from those of the run that wrote "
+                    "the checkpoint '" +
+                    checkpoint + "' in " + std::to_string(changed.size()) +
+                    " entries that describe the model: " +
+                    joined(std::vector<std::string>(
+                             changed.begin(),
+                             changed.begin() +
+                               std::min<std::size_t>(changed.size(), 5)),
+                           "; ") +
+                    ". A restart may change only " + joined(changeable, ", ") +
+                    " (restart without a parameter file to use the run's "
+                    "own)."));
+      AssertThrow(integrator.end_time() > data.value("time"),
+                  ExcMessage("Time integration/End time = " +
+                             format_number(integrator.end_time()) +
+                             " is not beyond the time of the checkpoint '" +
+                             checkpoint + "', t = " +
+                             format_number(data.value("time")) +
+                             ": nothing to continue (give a later End "
+                             "time)."));
+      AssertThrow(data.get("coarse mesh", 2) ==
+                    coarse_mesh_signature(*triangulation),
+                  ExcMessage("The checkpoint '" + checkpoint +
+                             "' was written on another coarse mesh than "
+                             "these parameters build (a changed mesh "
+                             "file?)."));
+      if (is_root(mpi_communicator))
+        create_output_directory(output_parameters.directory);
     });
-    restarting = true;
-    // the continued files end at this step: rows after it (written before
-    // the stop) go
+    restarting       = true;
+    wall_time_before = data.value("wall time");
+    same_on_every_process([&]() {
+      load_checkpoint(checkpoint, data);
+      AssertThrow(data.text("statistics columns") ==
+                    joined(statistics_columns(), ","),
+                  ExcMessage("The statistics of these parameters have other "
+                             "columns than those of the checkpoint '" +
+                             checkpoint + "' (" +
+                             data.text("statistics columns") +
+                             "): restart with the parameters of the run."));
+    });
+
+    // the continued files must be those the checkpoint was written with;
+    // rows written after it (before the stop) go
     const auto &sizes = data.get("output/file sizes", continued_files.size());
+    std::istringstream hashes(data.text("output/file hashes"));
     check_collectively(mpi_communicator, [&]() {
       if (!is_root(mpi_communicator))
         return;
-      create_output_directory(output_parameters.directory);
+      std::vector<std::string> files;
       for (unsigned int k = 0; k < continued_files.size(); ++k)
         {
+          std::string hash;
+          std::getline(hashes, hash);
           if (sizes[k] < 0)
             continue;
           const std::string file =
             output_parameters.directory + "/" + continued_files[k];
-          const double size = std::filesystem::exists(file) ?
-                                std::filesystem::file_size(file) :
-                                -1.;
-          AssertThrow(size >= sizes[k],
+          std::error_code error;
+          const double    size = std::filesystem::file_size(file, error);
+          AssertThrow(!error && size >= sizes[k] &&
+                        Checkpoints::tail_hash(file, sizes[k]) == hash,
                       ExcMessage(
                         "Cannot continue '" + file + "' from the checkpoint '" +
                         checkpoint + "': it " +
-                        (size < 0 ? std::string("does not exist") :
-                                    "has " + format_number(size) + " bytes") +
-                        ", the checkpoint needs its first " +
-                        format_number(sizes[k]) +
-                        " bytes (restart in the output directory of the run "
-                        "that wrote the checkpoint)."));
-          std::filesystem::resize_file(file, sizes[k]);
+                        (error ? std::string("does not exist") :
+                         size < sizes[k] ?
+                                 "has " + format_number(size) +
+                                   " bytes, the checkpoint needs its first " +
+                                   format_number(sizes[k]) :
+                                 std::string("is not the file the checkpoint "
+                                             "was written with (another run "
+                                             "wrote it since)")) +
+                        ". Restart in the output directory of the run that "
+                        "wrote the checkpoint."));
+          files.push_back(file);
         }
+      std::error_code same;
+      if (std::filesystem::equivalent(std::filesystem::path(checkpoint)
+                                        .parent_path(),
+                                      output_parameters.directory +
+                                        "/checkpoints",
+                                      same))
+        Checkpoints::remove_later(checkpoint);
+      for (unsigned int k = 0; k < files.size(); ++k)
+        std::filesystem::resize_file(files[k], sizes[k]);
+      write_file_atomically(output_parameters.directory + "/parameters.prm",
+                            [&](std::ostream &out) { out << parameters_text; });
     });
-    load_checkpoint(checkpoint, data);
 
     check_collectively(mpi_communicator, [&]() {
       if (is_root(mpi_communicator))

@@ -433,6 +433,7 @@ namespace ContactDynamics
     std::unique_ptr<SolutionWriter<dim>> solution_writer;
     std::unique_ptr<ContactWriter<dim>>  contact_writer;
     Timer                                wall_timer;
+    double wall_time_before = 0; // of the runs this one continues
   };
 } // namespace ContactDynamics
 

@@ -1806,6 +1806,10 @@ namespace ContactDynamics
         for (const auto *t : {&r.torque, &r.friction_torque})
           reaction.insert(reaction.end(), t->begin_raw(), t->end_raw());
         data.set(key + "reaction", reaction);
+        // (3-D obstacles: chosen at the placement of the setup's time)
+        data.set(key + "tangent axis",
+                 std::vector<double>(pair.tangent_axis.begin(),
+                                     pair.tangent_axis.end()));
         save_per_process(data, key + "pattern", pair.pattern);
       }
     data.set("contact/obstacle work",
@@ -1847,7 +1851,13 @@ namespace ContactDynamics
           {
             std::array<double, dim> x;
             std::copy(nodes[j].begin_raw(), nodes[j].end_raw(), x.begin());
-            index[x] = j;
+            AssertThrow(index.emplace(x, j).second,
+                        ExcMessage("The contact pair '" +
+                                   contact.pairs[p].name +
+                                   "' has two secondary nodes at " +
+                                   coordinates(nodes[j]) +
+                                   ": a checkpoint of another number of "
+                                   "processes cannot tell them apart."));
           }
         for (unsigned int k = 0; k < nodes.size(); ++k)
           {
@@ -1890,6 +1900,10 @@ namespace ContactDynamics
           }
         for (unsigned int j = 0; j < n; ++j)
           pair.position[j] = pair.secondary.position(j, u);
+        const auto &axes = data.get(key + "tangent axis");
+        if (axes.size() == pair.tangent_axis.size())
+          for (unsigned int k = 0; k < axes.size(); ++k)
+            pair.tangent_axis[maps[p].empty() ? k : maps[p][k]] = axes[k];
         const auto &reaction = data.get(key + "reaction", 2 * dim + 6);
         auto       &r        = pair.committed_reaction;
         auto        x        = reaction.begin();

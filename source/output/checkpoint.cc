@@ -6,9 +6,12 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <set>
+#include <sstream>
 
 namespace ContactDynamics
 {
@@ -58,7 +61,25 @@ namespace ContactDynamics
     bool
     is_checkpoint(const fs::path &path)
     {
-      return fs::is_regular_file(path / Checkpoints::data_file);
+      return path.extension() != ".part" &&
+             fs::is_regular_file(path / Checkpoints::data_file);
+    }
+
+    // the step of a checkpoint directory step-N (names sort as text only
+    // up to 7 digits)
+    unsigned long long
+    step_of(const fs::path &path)
+    {
+      const std::string name = path.filename().string();
+      return std::strtoull(name.c_str() + 5, nullptr, 10);
+    }
+
+    void
+    sort_by_step(std::vector<fs::path> &paths)
+    {
+      std::sort(paths.begin(), paths.end(), [](const auto &a, const auto &b) {
+        return step_of(a) < step_of(b);
+      });
     }
   } // namespace
 
@@ -183,8 +204,14 @@ namespace ContactDynamics
            const unsigned int keep)
     {
       std::error_code error;
-      // a checkpoint of the same step (a restarted run passing it again)
-      fs::remove_all(final, error);
+      // a checkpoint of the same step (a restarted run passing it again):
+      // out of the way first under a name find() ignores
+      const std::string old = final + ".old.part";
+      if (fs::exists(final))
+        {
+          fs::remove_all(old, error);
+          fs::rename(final, old, error);
+        }
       fs::rename(temporary, final, error);
       AssertThrow(!error,
                   ExcMessage("Cannot rename the checkpoint directory '" +
@@ -203,10 +230,11 @@ namespace ContactDynamics
           else
             complete.push_back(entry.path());
         }
-      std::sort(complete.begin(), complete.end());
+      sort_by_step(complete);
       // those of later steps continue an abandoned run (this one restarted
       // from an earlier checkpoint, and its files no longer reach them)
-      while (!complete.empty() && complete.back() > fs::path(final))
+      while (!complete.empty() &&
+             step_of(complete.back()) > step_of(fs::path(final)))
         {
           fs::remove_all(complete.back(), error);
           complete.pop_back();
@@ -215,12 +243,108 @@ namespace ContactDynamics
         fs::remove_all(complete[i], error);
     }
 
+    namespace
+    {
+      std::map<std::string, std::string>
+      entries(const std::string &text)
+      {
+        std::map<std::string, std::string> values;
+        std::vector<std::string>           path;
+        std::istringstream                 in(text);
+        std::string                        line;
+        while (std::getline(in, line))
+          {
+            line = Utilities::trim(line);
+            if (line.rfind("subsection ", 0) == 0)
+              path.push_back(Utilities::trim(line.substr(11)));
+            else if (line == "end" && !path.empty())
+              path.pop_back();
+            else if (line.rfind("set ", 0) == 0 &&
+                     line.find('=') != std::string::npos)
+              {
+                std::string name;
+                for (const auto &p : path)
+                  name += p + "/";
+                name += Utilities::trim(line.substr(4, line.find('=') - 4));
+                values[name] = Utilities::trim(line.substr(line.find('=') + 1));
+              }
+          }
+        return values;
+      }
+    } // namespace
+
+    std::vector<std::string>
+    changed_entries(const std::string              &old_text,
+                    const std::string              &new_text,
+                    const std::vector<std::string> &allowed)
+    {
+      const auto old_values = entries(old_text), new_values = entries(new_text);
+      std::set<std::string> names;
+      for (const auto &[name, value] : old_values)
+        names.insert(name);
+      for (const auto &[name, value] : new_values)
+        names.insert(name);
+      std::vector<std::string> changed;
+      for (const auto &name : names)
+        {
+          if (std::any_of(allowed.begin(), allowed.end(), [&](const auto &a) {
+                return name.rfind(a, 0) == 0;
+              }))
+            continue;
+          const auto o = old_values.find(name), n = new_values.find(name);
+          const std::string before = o == old_values.end() ? "(none)" : o->second;
+          const std::string after = n == new_values.end() ? "(none)" : n->second;
+          if (before != after)
+            changed.push_back(name + ": " + before + " -> " + after);
+        }
+      return changed;
+    }
+
+    std::string
+    tail_hash(const std::string &file, const std::uintmax_t size)
+    {
+      std::ifstream in(file, std::ios::binary);
+      if (!in)
+        return "";
+      const std::uintmax_t length = std::min<std::uintmax_t>(size, 4096);
+      in.seekg(size - length);
+      std::string bytes(length, '\0');
+      in.read(bytes.data(), length);
+      if (!in)
+        return "";
+      // FNV-1a, 64 bits
+      std::uint64_t hash = 1469598103934665603ull;
+      for (const unsigned char c : bytes)
+        hash = (hash ^ c) * 1099511628211ull;
+      std::ostringstream text;
+      text << std::hex << hash << ":" << std::dec << size;
+      return text.str();
+    }
+
+    void
+    remove_later(const std::string &checkpoint)
+    {
+      const fs::path  path(checkpoint);
+      std::error_code error;
+      for (const auto &entry :
+           fs::directory_iterator(path.parent_path(), error))
+        if (entry.path().filename().string().rfind("step-", 0) == 0 &&
+            entry.path().extension() != ".part" &&
+            step_of(entry.path()) > step_of(path))
+          fs::remove_all(entry.path(), error);
+    }
+
     std::string
     find(const std::string &path)
     {
       AssertThrow(fs::exists(path),
                   ExcMessage("--restart " + path +
                              ": no such file or directory."));
+      AssertThrow(fs::path(path).extension() != ".part",
+                  ExcMessage("--restart " + path +
+                             ": a checkpoint that was not completed (its "
+                             "writing was interrupted); give the output "
+                             "directory to take the newest complete one."));
       if (is_checkpoint(path))
         return path;
       std::vector<fs::path> complete;
@@ -236,7 +360,8 @@ namespace ContactDynamics
                              data_file +
                              ") nor an output directory with a complete "
                              "checkpoint in its checkpoints/ directory."));
-      return std::max_element(complete.begin(), complete.end())->string();
+      sort_by_step(complete);
+      return complete.back().string();
     }
   } // namespace Checkpoints
 } // namespace ContactDynamics

@@ -5,6 +5,7 @@
 #ifndef contact_dynamics_output_checkpoint_h
 #define contact_dynamics_output_checkpoint_h
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -106,6 +107,32 @@ namespace ContactDynamics
     commit(const std::string &temporary,
            const std::string &final,
            const unsigned int keep);
+
+    /**
+     * The entries of two parameter files as ParameterHandler prints them
+     * (ShortPRM) that differ, as 'Section/Entry: old -> new', leaving out
+     * those whose name starts with one of `allowed`.
+     */
+    std::vector<std::string>
+    changed_entries(const std::string              &old_text,
+                    const std::string              &new_text,
+                    const std::vector<std::string> &allowed);
+
+    /**
+     * A hash (hexadecimal) of the last up to 4096 bytes of the first `size`
+     * bytes of `file`: a restart checks that it continues the file the
+     * checkpoint was written with. Empty if the file cannot be read.
+     */
+    std::string
+    tail_hash(const std::string &file, const std::uintmax_t size);
+
+    /**
+     * First process, restarting from `checkpoint`: removes the checkpoints
+     * of later steps next to it (they continue a run the restart
+     * abandons).
+     */
+    void
+    remove_later(const std::string &checkpoint);
 
     /**
      * `path` if it holds a checkpoint, else the newest complete checkpoint
