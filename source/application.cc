@@ -275,7 +275,7 @@ namespace ContactDynamics
       dim = read_parameters(parameters, prm);
       // the run's own parameters continue where the checkpoint is, not
       // where its output directory was relative to
-      const std::filesystem::path where(checkpoint);
+      const std::filesystem::path where(checkpoint); // absolute, normal
       if (!checkpoint.empty() && filename.empty() &&
           where.parent_path().filename() == "checkpoints")
         {

@@ -724,10 +724,7 @@ namespace ContactDynamics
           create_output_directory(output_parameters.directory);
           // a new run: checkpoints of an earlier one here would continue
           // that run against this run's files
-          std::error_code error;
-          std::filesystem::remove_all(output_parameters.directory +
-                                        "/checkpoints",
-                                      error);
+          Checkpoints::remove_all_checkpoints(output_parameters.directory);
         }
     });
     time                         = 0;
@@ -747,20 +744,7 @@ namespace ContactDynamics
     setup_system();
     apply_initial_conditions();
 
-    const std::vector<std::string> columns = statistics_columns();
-    check_collectively(mpi_communicator, [&]() {
-      if (is_root(mpi_communicator))
-        statistics =
-          std::make_unique<StatisticsFile>(output_parameters.directory +
-                                             "/statistics.csv",
-                                           columns);
-    });
-    solution_writer =
-      std::make_unique<SolutionWriter<dim>>(mpi_communicator,
-                                            output_parameters.directory,
-                                            contact ?
-                                              contact->extra_component_names() :
-                                              std::vector<std::string>());
+    open_output_files(false);
 
     print_problem_size();
     output_step(0, 0., true);
@@ -796,6 +780,26 @@ namespace ContactDynamics
       for (const auto *c : {"error_estimate", "rejected_steps"})
         columns.emplace_back(c);
     return columns;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::open_output_files(const bool append)
+  {
+    check_collectively(mpi_communicator, [&]() {
+      if (is_root(mpi_communicator))
+        statistics =
+          std::make_unique<StatisticsFile>(output_parameters.directory +
+                                             "/statistics.csv",
+                                           statistics_columns(),
+                                           append);
+    });
+    solution_writer =
+      std::make_unique<SolutionWriter<dim>>(mpi_communicator,
+                                            output_parameters.directory,
+                                            contact ?
+                                              contact->extra_component_names() :
+                                              std::vector<std::string>());
   }
 
   template <int dim>

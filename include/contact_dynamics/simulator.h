@@ -278,6 +278,9 @@ namespace ContactDynamics
     /** The columns of statistics.csv. */
     std::vector<std::string>
     statistics_columns() const;
+    /** statistics.csv (continued if `append`) and the solution writer. */
+    void
+    open_output_files(const bool append);
     /** The scene, its size and the partition, on the screen. */
     void
     print_problem_size();

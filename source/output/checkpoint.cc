@@ -67,11 +67,28 @@ namespace ContactDynamics
 
     // the step of a checkpoint directory step-N (names sort as text only
     // up to 7 digits)
+    bool
+    is_step_name(const fs::path &path)
+    {
+      return path.filename().string().rfind("step-", 0) == 0;
+    }
+
     unsigned long long
     step_of(const fs::path &path)
     {
       const std::string name = path.filename().string();
-      return std::strtoull(name.c_str() + 5, nullptr, 10);
+      return is_step_name(path) ? std::strtoull(name.c_str() + 5, nullptr, 10) :
+                                  0;
+    }
+
+    // a checkpoint this program wrote (its state.bin starts with the tag)
+    bool
+    is_own(const fs::path &path)
+    {
+      std::ifstream in(path / Checkpoints::data_file, std::ios::binary);
+      std::string   first(tag.size(), '\0');
+      in.read(first.data(), first.size());
+      return in && first == tag;
     }
 
     void
@@ -211,19 +228,28 @@ namespace ContactDynamics
         {
           fs::remove_all(old, error);
           fs::rename(final, old, error);
+          AssertThrow(!error,
+                      ExcMessage("Cannot move the checkpoint directory '" +
+                                 final + "' aside to '" + old +
+                                 "': " + error.message() + "."));
         }
       fs::rename(temporary, final, error);
-      AssertThrow(!error,
-                  ExcMessage("Cannot rename the checkpoint directory '" +
-                             temporary + "' to '" + final +
-                             "': " + error.message() + "."));
+      if (error)
+        {
+          std::error_code back;
+          if (fs::exists(old))
+            fs::rename(old, final, back);
+          AssertThrow(false,
+                      ExcMessage("Cannot rename the checkpoint directory '" +
+                                 temporary + "' to '" + final +
+                                 "': " + error.message() + "."));
+        }
       // the names sort as the steps do
       std::vector<fs::path> complete;
       for (const auto &entry : fs::directory_iterator(
              fs::path(final).parent_path()))
         {
-          const std::string name = entry.path().filename().string();
-          if (name.rfind("step-", 0) != 0)
+          if (!is_step_name(entry.path()))
             continue;
           if (entry.path().extension() == ".part")
             fs::remove_all(entry.path(), error);
@@ -328,34 +354,51 @@ namespace ContactDynamics
       std::error_code error;
       for (const auto &entry :
            fs::directory_iterator(path.parent_path(), error))
-        if (entry.path().filename().string().rfind("step-", 0) == 0 &&
-            entry.path().extension() != ".part" &&
+        if (is_step_name(entry.path()) && entry.path().extension() != ".part" &&
             step_of(entry.path()) > step_of(path))
           fs::remove_all(entry.path(), error);
     }
 
-    std::string
-    find(const std::string &path)
+    void
+    remove_all_checkpoints(const std::string &output_directory)
     {
-      AssertThrow(fs::exists(path),
-                  ExcMessage("--restart " + path +
+      const fs::path  directory = fs::path(output_directory) / "checkpoints";
+      std::error_code error;
+      if (!fs::is_directory(directory, error))
+        return;
+      for (const auto &entry : fs::directory_iterator(directory, error))
+        if (is_step_name(entry.path()) &&
+            (is_own(entry.path()) || entry.path().extension() == ".part"))
+          fs::remove_all(entry.path(), error);
+      // only if nothing else is in it
+      fs::remove(directory, error);
+    }
+
+    std::string
+    find(const std::string &given)
+    {
+      AssertThrow(fs::exists(given),
+                  ExcMessage("--restart " + given +
                              ": no such file or directory."));
-      AssertThrow(fs::path(path).extension() != ".part",
-                  ExcMessage("--restart " + path +
+      // 'out/', '.', relative to anywhere: one absolute name
+      fs::path path = fs::absolute(given).lexically_normal();
+      if (!path.has_filename())
+        path = path.parent_path();
+      AssertThrow(path.extension() != ".part" || !is_step_name(path),
+                  ExcMessage("--restart " + given +
                              ": a checkpoint that was not completed (its "
                              "writing was interrupted); give the output "
                              "directory to take the newest complete one."));
       if (is_checkpoint(path))
-        return path;
+        return path.string();
       std::vector<fs::path> complete;
-      const fs::path        under = fs::path(path) / "checkpoints";
-      if (fs::is_directory(under))
-        for (const auto &entry : fs::directory_iterator(under))
-          if (entry.path().extension() != ".part" &&
-              is_checkpoint(entry.path()))
-            complete.push_back(entry.path());
+      for (const fs::path &under : {path / "checkpoints", path})
+        if (complete.empty() && fs::is_directory(under))
+          for (const auto &entry : fs::directory_iterator(under))
+            if (is_step_name(entry.path()) && is_checkpoint(entry.path()))
+              complete.push_back(entry.path());
       AssertThrow(!complete.empty(),
-                  ExcMessage("--restart " + path +
+                  ExcMessage("--restart " + given +
                              ": neither a checkpoint (a directory with " +
                              data_file +
                              ") nor an output directory with a complete "

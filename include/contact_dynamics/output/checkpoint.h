@@ -135,8 +135,17 @@ namespace ContactDynamics
     remove_later(const std::string &checkpoint);
 
     /**
+     * A new run: removes the checkpoints this program wrote in
+     * `output_directory`/checkpoints (and the directory, if nothing else is
+     * in it).
+     */
+    void
+    remove_all_checkpoints(const std::string &output_directory);
+
+    /**
      * `path` if it holds a checkpoint, else the newest complete checkpoint
-     * under `path`/checkpoints; throws naming `path` if there is none.
+     * under `path`/checkpoints (or `path` itself, a checkpoints directory),
+     * as an absolute name; throws naming `path` if there is none.
      */
     std::string
     find(const std::string &path);
