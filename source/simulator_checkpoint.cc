@@ -276,7 +276,8 @@ namespace ContactDynamics
                     "The parameters differ from those of the run that wrote "
                     "the checkpoint '" +
                     checkpoint + "' in " + std::to_string(changed.size()) +
-                    " entries that describe the model: " +
+                    (changed.size() == 1 ? " entry" : " entries") +
+                    " that describe the model: " +
                     joined(std::vector<std::string>(
                              changed.begin(),
                              changed.begin() +
