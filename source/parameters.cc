@@ -7,6 +7,15 @@
 
 namespace ContactDynamics
 {
+  std::string
+  join(const std::vector<std::string> &parts, const std::string &separator)
+  {
+    std::string text;
+    for (const auto &p : parts)
+      text += (text.empty() ? "" : separator) + p;
+    return text;
+  }
+
   namespace
   {
     // "1e+06" -> "1e6", "1e-07" -> "1e-7"

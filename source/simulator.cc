@@ -33,18 +33,6 @@
 
 namespace ContactDynamics
 {
-  namespace
-  {
-    std::string
-    join(const std::vector<std::string> &parts, const std::string &separator)
-    {
-      std::string text;
-      for (const auto &p : parts)
-        text += (text.empty() ? "" : separator) + p;
-      return text;
-    }
-  } // namespace
-
   template <int dim>
   void
   Simulator<dim>::declare_parameters(ParameterHandler  &prm,

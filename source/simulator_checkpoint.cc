@@ -34,15 +34,6 @@ namespace ContactDynamics
       "Parallel/Partitioner",
       "Parallel/Contact cell weight"};
 
-    std::string
-    joined(const std::vector<std::string> &parts, const std::string &separator)
-    {
-      std::string text;
-      for (const auto &p : parts)
-        text += (text.empty() ? "" : separator) + p;
-      return text;
-    }
-
     // the coarse mesh's cells and the sum of their vertices' coordinates
     template <int dim>
     std::vector<double>
@@ -143,7 +134,7 @@ namespace ContactDynamics
     data.set("wall time", wall_time_before + wall_timer.wall_time());
     data.set("coarse mesh", coarse_mesh_signature(*triangulation));
     data.set_text("parameters", parameters_text);
-    data.set_text("statistics columns", joined(statistics_columns(), ","));
+    data.set_text("statistics columns", join(statistics_columns(), ","));
     // where the continued files end (their rows are flushed as written),
     // and what they end with
     std::vector<double> sizes;
@@ -278,12 +269,12 @@ namespace ContactDynamics
                     checkpoint + "' in " + std::to_string(changed.size()) +
                     (changed.size() == 1 ? " entry" : " entries") +
                     " that describe the model: " +
-                    joined(std::vector<std::string>(
+                    join(std::vector<std::string>(
                              changed.begin(),
                              changed.begin() +
                                std::min<std::size_t>(changed.size(), 5)),
                            "; ") +
-                    ". A restart may change only " + joined(changeable, ", ") +
+                    ". A restart may change only " + join(changeable, ", ") +
                     " (restart without a parameter file to use the run's "
                     "own)."));
       AssertThrow(integrator.end_time() > data.value("time"),
@@ -340,7 +331,7 @@ namespace ContactDynamics
     // (the columns are known once the contact is set up)
     check_collectively(mpi_communicator, [&]() {
       AssertThrow(data.text("statistics columns") ==
-                    joined(statistics_columns(), ","),
+                    join(statistics_columns(), ","),
                   ExcMessage("The statistics of these parameters have other "
                              "columns than those of the checkpoint '" +
                              checkpoint + "' (" +

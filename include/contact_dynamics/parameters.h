@@ -18,6 +18,11 @@ namespace ContactDynamics
 {
   using namespace dealii;
 
+  /** The parts with `separator` between them (for messages). */
+  std::string
+  join(const std::vector<std::string> &parts,
+       const std::string              &separator = ", ");
+
   /** x with 6 significant digits, as an ostream writes it (1e-07). */
   std::string
   format_number(const double x);

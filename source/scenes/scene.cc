@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <contact_dynamics/parameters.h>
 #include <contact_dynamics/scenes/scene.h>
 #include <contact_dynamics/scenes/scene_registry.h>
 
@@ -9,15 +10,6 @@ namespace ContactDynamics
 {
   namespace
   {
-    std::string
-    join(const std::vector<std::string> &names)
-    {
-      std::string result;
-      for (const auto &name : names)
-        result += (result.empty() ? "" : ", ") + name;
-      return result;
-    }
-
     const SceneEntry *
     find_scene(const std::string &name)
     {
