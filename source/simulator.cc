@@ -757,6 +757,8 @@ namespace ContactDynamics
                                      "final_residual",
                                      "time_step_cuts",
                                      "linear_iterations"};
+    if (integrator.is_dissipative())
+      columns.insert(columns.begin() + 8, "numerical_dissipation");
     if (contact)
       for (const auto &c : contact->statistics_columns())
         columns.push_back(c);
@@ -799,6 +801,12 @@ namespace ContactDynamics
           << dof_handler.n_dofs() << " unknowns, " << bodies.size() << " bod"
           << (bodies.size() == 1 ? "y" : "ies") << "; linear solver "
           << linear_solver_name << std::endl;
+    if (balances_between_steps())
+      pcout << "Time integration " << integrator.scheme_name()
+            << ": alpha_m = " << integrator.alpha_m()
+            << ", alpha_f = " << integrator.alpha_f()
+            << ", beta = " << integrator.beta()
+            << ", gamma = " << integrator.gamma() << std::endl;
     const unsigned int n_processes =
       Utilities::MPI::n_mpi_processes(mpi_communicator);
     if (n_processes > 1)
@@ -961,10 +969,13 @@ namespace ContactDynamics
           setup_sparsity();
       }
     TimerOutput::Scope t(*timer, "bulk assembly");
+    const bool         balanced = balances_between_steps();
+    if (balanced)
+      compute_effective_acceleration();
     mechanics->assemble(u_ghost,
                         v_new,
-                        a_new,
-                        integrator.acceleration_factor(dt_current),
+                        balanced ? effective_acceleration : a_new,
+                        integrator.effective_acceleration_factor(dt_current),
                         integrator.velocity_factor(dt_current),
                         increment_constraints,
                         with_jacobian,
@@ -987,6 +998,38 @@ namespace ContactDynamics
                           jacobian_out,
                           residual_full);
       }
+    if (balanced)
+      {
+        // the forces of the committed state, contact included, weighted
+        const double w = integrator.old_force_factor();
+        residual_full.add(w, force_old);
+        residual_out.add(w, force_old);
+        increment_constraints.set_zero(residual_out);
+      }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::compute_effective_acceleration()
+  {
+    effective_acceleration = a_new;
+    effective_acceleration.sadd(integrator.inertia_factor(),
+                                integrator.old_inertia_factor(),
+                                a);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::compute_old_forces()
+  {
+    force_old.reinit(residual_full_old, true);
+    mechanics->inertia_force(a, -1., force_old);
+    force_old += residual_full_old;
+    // the multiplier rows hold no forces
+    for (const auto i : locally_owned)
+      if (!displacement_dofs.is_element(i))
+        force_old(i) = 0;
+    force_old.compress(VectorOperation::insert);
   }
 
   template <int dim>
@@ -1084,6 +1127,8 @@ namespace ContactDynamics
     bool         adapted = false;
     for (unsigned int pass = 0;; ++pass)
       {
+        if (balances_between_steps())
+          compute_old_forces();
         {
           TimerOutput::Scope t(*timer, "Newton solve");
           result = newton.solve(*this,
@@ -1118,10 +1163,27 @@ namespace ContactDynamics
     std::string failure = result.failure;
 
     EnergyBalance updated = energies;
+    // the bulk's energy account and the contact work before the step, for
+    // the numerical dissipation
+    const double bulk_before = energies.kinetic + energies.elastic +
+                               energies.dissipated - energies.external;
+    const double contact_work_before = contact ? contact->contact_work() : 0.;
     if (result.converged)
       {
         TimerOutput::Scope t(*timer, "energies");
         set_trial_velocity_and_acceleration();
+        if (balances_between_steps())
+          {
+            // residual_full holds the balance between the steps; the
+            // reactions and the next step need M a_{n+1} + F_{n+1}
+            compute_effective_acceleration();
+            residual_full.add(-integrator.old_force_factor(), force_old);
+            VectorType inertia(residual_full);
+            increment = a_new;
+            increment -= effective_acceleration;
+            mechanics->inertia_force(increment, 1., inertia);
+            residual_full += inertia;
+          }
         VectorType mean_velocity(v);
         mean_velocity.sadd(0.5, 0.5, v_new);
         increment = u_new;
@@ -1208,6 +1270,13 @@ namespace ContactDynamics
         energies.frictional = contact->dissipated_energy();
         energies.obstacle   = contact->obstacle_work();
       }
+    // what the bulk lost beyond its physical account (damping, external
+    // work, the work of the contact forces), all trapezoidal in time
+    if (integrator.is_dissipative())
+      energies.numerical +=
+        (contact ? contact->contact_work() - contact_work_before : 0.) -
+        (energies.kinetic + energies.elastic + energies.dissipated -
+         energies.external - bulk_before);
     if (integrator.error_tolerance() > 0)
       {
         mean_acceleration_before.swap(mean_acceleration);
@@ -1248,6 +1317,8 @@ namespace ContactDynamics
                             final_residual,
                             double(time_step_cuts),
                             double(step == 0 ? 0 : linear_iterations)};
+    if (integrator.is_dissipative())
+      row.insert(row.begin() + 8, energies.numerical);
     if (contact)
       for (const double x : contact->statistics())
         row.push_back(x);

@@ -130,7 +130,8 @@ namespace ContactDynamics
               energies.initial,
               energies.frictional,
               energies.obstacle,
-              energies.transfer});
+              energies.transfer,
+              energies.numerical});
     data.set("wall time", wall_time_before + wall_timer.wall_time());
     data.set("coarse mesh", coarse_mesh_signature(*triangulation));
     data.set_text("parameters", parameters_text);
@@ -441,7 +442,7 @@ namespace ContactDynamics
     committed_active_nodes       = mesh[2];
     previous_active_nodes        = mesh[3];
     last_vtu_step                = mesh[4];
-    const auto &e                = data.get("energies", 8);
+    const auto &e                = data.get("energies", 9);
     energies.kinetic             = e[0];
     energies.elastic             = e[1];
     energies.dissipated          = e[2];
@@ -450,6 +451,7 @@ namespace ContactDynamics
     energies.frictional          = e[5];
     energies.obstacle            = e[6];
     energies.transfer            = e[7];
+    energies.numerical           = e[8];
     // a shorter Time step than the run's (the solver settings may change)
     dt_next = std::min(dt_next, integrator.time_step());
 

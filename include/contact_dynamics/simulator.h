@@ -47,12 +47,14 @@ namespace ContactDynamics
     double frictional = 0; // dissipated by contact friction
     double obstacle   = 0; // work of moving rigid obstacles on the bodies
     double transfer   = 0; // energy change of the mesh transfers
+    // removed by the time integrator from the bulk (dissipative schemes)
+    double numerical = 0;
 
     double
     error() const
     {
-      return kinetic + elastic + dissipated + frictional - external - obstacle -
-             transfer - initial;
+      return kinetic + elastic + dissipated + frictional + numerical -
+             external - obstacle - transfer - initial;
     }
   };
 
@@ -238,6 +240,18 @@ namespace ContactDynamics
      * the next step. */
     void
     assemble_committed_reactions();
+    /** Whether the scheme balances the forces between the steps. */
+    bool
+    balances_between_steps() const
+    {
+      return integrator.alpha_m() != 0 || integrator.alpha_f() != 0;
+    }
+    /** force_old from residual_full_old and a. */
+    void
+    compute_old_forces();
+    /** effective_acceleration from a and a_new. */
+    void
+    compute_effective_acceleration();
     /** The bulk reactions of the committed state and, with contact, its
      * history on a new mesh. */
     void
@@ -391,6 +405,9 @@ namespace ContactDynamics
     VectorType u, v, a, u_new, v_new, a_new;
     VectorType residual, residual_full, residual_full_old, increment,
       body_force;
+    // generalized-alpha and HHT: the forces F_n of the committed state
+    // (residual_full_old without M a_n) and the balanced acceleration
+    VectorType force_old, effective_acceleration;
     // ghosted: the trial state of the last assembly (committed to the
     // contact when the step converges), and scratch copies
     VectorType    u_ghost, v_ghost, scratch_ghost[2];

@@ -709,25 +709,42 @@ namespace ContactDynamics
         linear_stiffness.vmult(product, owned(u, scratch[0]));
         residual_full += product;
       }
-    // the rows of hanging nodes go to the rows they follow (C^T r), held
-    // ones too (their reactions); then the rows of the held and hanging
-    // degrees of freedom are dropped
-    if (any_hanging_rows)
-      {
-        residual = residual_full;
-        for (const auto &row : hanging_rows)
-          {
-            for (const auto &entry : row.second)
-              residual_full.add(
-                std::vector<types::global_dof_index>{entry.first},
-                std::vector<double>{entry.second * residual(row.first)});
-            residual_full.add(std::vector<types::global_dof_index>{row.first},
-                              std::vector<double>{-residual(row.first)});
-          }
-        residual_full.compress(VectorOperation::add);
-      }
+    // the rows of hanging nodes go to the rows they follow, held ones too
+    // (their reactions); then the rows of the held and hanging degrees of
+    // freedom are dropped
+    move_hanging_rows(residual_full, residual);
     residual = residual_full;
     constraints.set_zero(residual);
+  }
+
+  template <int dim>
+  void
+  SolidMechanics<dim>::move_hanging_rows(VectorType &full,
+                                         VectorType &copy) const
+  {
+    if (!any_hanging_rows)
+      return;
+    copy = full;
+    for (const auto &row : hanging_rows)
+      {
+        for (const auto &entry : row.second)
+          full.add(std::vector<types::global_dof_index>{entry.first},
+                   std::vector<double>{entry.second * copy(row.first)});
+        full.add(std::vector<types::global_dof_index>{row.first},
+                 std::vector<double>{-copy(row.first)});
+      }
+    full.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  SolidMechanics<dim>::inertia_force(const VectorType &a,
+                                     const double      factor,
+                                     VectorType       &force) const
+  {
+    mass.vmult(force, owned(a, scratch[0]));
+    force *= factor;
+    move_hanging_rows(force, scratch[2]);
   }
 
   template <int dim>

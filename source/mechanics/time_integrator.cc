@@ -4,6 +4,8 @@
 #include <contact_dynamics/mechanics/time_integrator.h>
 #include <contact_dynamics/parameters.h>
 
+#include <cmath>
+
 
 namespace ContactDynamics
 {
@@ -11,7 +13,16 @@ namespace ContactDynamics
   {
     const Selection<TimeIntegrator::Scheme> scheme_names{
       {TimeIntegrator::Scheme::newmark, "newmark"},
+      {TimeIntegrator::Scheme::generalized_alpha, "generalized-alpha"},
+      {TimeIntegrator::Scheme::hht_alpha, "hht-alpha"},
       {TimeIntegrator::Scheme::quasi_static, "quasi-static"}};
+
+    // an optional number: empty or one value in [lower, upper]
+    Patterns::List
+    optional_number(const double lower, const double upper)
+    {
+      return Patterns::List(Patterns::Double(lower, upper), 0, 1);
+    }
 
     const Selection<TimeIntegrator::Predictor> predictor_names{
       {TimeIntegrator::Predictor::displacement, "constant displacement"},
@@ -27,15 +38,51 @@ namespace ContactDynamics
                       scheme_names.name(defaults.scheme),
                       scheme_names.pattern(),
                       "'newmark': implicit dynamics with Newmark-beta. "
-                      "'quasi-static': no inertia and no damping; time only "
-                      "parametrizes the loading (cheaper: no mass matrix).");
+                      "'generalized-alpha' (Chung and Hulbert 1993) and "
+                      "'hht-alpha' (Hilber, Hughes and Taylor 1977): "
+                      "second-order accurate dynamics that damp the "
+                      "frequencies the step does not resolve (set by the "
+                      "Spectral radius at infinity) and hardly the resolved "
+                      "ones, unlike Rayleigh damping; beta and gamma follow "
+                      "from the alphas. 'quasi-static': no inertia and no "
+                      "damping; time only parametrizes the loading (cheaper: "
+                      "no mass matrix).");
+    prm.declare_entry(
+      "Spectral radius at infinity",
+      default_text(defaults.spectral_radius_),
+      Patterns::Double(0, 1),
+      "generalized-alpha and hht-alpha: the amplification of a frequency "
+      "far above 1/dt per step, rho_inf in [0, 1] (hht-alpha: [0.5, 1]). 1 "
+      "dissipates nothing (generalized-alpha is then the trapezoidal rule "
+      "between the steps), 0 annihilates the unresolved frequencies in one "
+      "step; the resolved ones lose less the smaller omega dt is "
+      "(doc/theory.md). Generalized-alpha: alpha_m = (2 rho_inf - 1) / "
+      "(rho_inf + 1), alpha_f = rho_inf / (rho_inf + 1); hht-alpha: alpha_m "
+      "= 0, alpha_f = (1 - rho_inf) / (1 + rho_inf); both: gamma = 1/2 - "
+      "alpha_m + alpha_f, beta = (1 - alpha_m + alpha_f)^2 / 4.");
+    prm.declare_entry(
+      "Alpha m",
+      "",
+      optional_number(-1, 0.5),
+      "generalized-alpha: the classical alpha_m, the weight of the old "
+      "acceleration in the balance, in [-1, 1/2] and not above Alpha f; "
+      "given with Alpha f, the two replace the Spectral radius at infinity. "
+      "Empty: from the spectral radius. hht-alpha: empty or 0.");
+    prm.declare_entry(
+      "Alpha f",
+      "",
+      optional_number(0, 0.5),
+      "generalized-alpha and hht-alpha: the classical alpha_f, the weight of "
+      "the old forces in the balance, in [0, 1/2] (hht-alpha: [0, 1/3]; "
+      "Hilber's alpha is -alpha_f); replaces the Spectral radius at "
+      "infinity. Empty: from the spectral radius.");
     prm.declare_entry("Newmark beta",
                       default_text(defaults.beta_),
                       Patterns::Double(1e-6, 0.5),
                       "Newmark beta in (0, 0.5]. 0.25 with gamma = 0.5 (the "
                       "trapezoidal rule) conserves the energy of a linear "
                       "undamped system; 2 beta >= gamma is required "
-                      "(unconditional stability).");
+                      "(unconditional stability). Scheme = newmark only.");
     prm.declare_entry(
       "Predictor",
       predictor_names.name(defaults.predictor),
@@ -49,7 +96,9 @@ namespace ContactDynamics
                       default_text(defaults.gamma_),
                       Patterns::Double(0.5, 1.),
                       "Newmark gamma in [0.5, 1]; gamma > 0.5 adds numerical "
-                      "dissipation of first order in dt.");
+                      "dissipation of first order in dt (and the "
+                      "numerical_dissipation column). Scheme = newmark "
+                      "only.");
     prm.declare_entry("Time step",
                       default_text(defaults.time_step_),
                       Patterns::Double(1e-300),
@@ -84,9 +133,12 @@ namespace ContactDynamics
   void
   TimeIntegrator::parse_parameters(ParameterHandler &prm)
   {
+    const TimeIntegrator defaults;
     scheme             = scheme_names.value(prm.get("Scheme"));
     beta_              = prm.get_double("Newmark beta");
     gamma_             = prm.get_double("Newmark gamma");
+    spectral_radius_   = prm.get_double("Spectral radius at infinity");
+    parse_alphas(prm.get("Alpha m"), prm.get("Alpha f"), defaults);
     predictor          = predictor_names.value(prm.get("Predictor"));
     time_step_         = prm.get_double("Time step");
     end_time_          = prm.get_double("End time");
@@ -98,6 +150,13 @@ namespace ContactDynamics
                            " needs Scheme = newmark (a quasi-static run has "
                            "no acceleration to estimate the error from); "
                            "use 0."));
+    AssertThrow(error_tolerance_ == 0 || scheme == Scheme::newmark,
+                ExcMessage("Time integration/Error tolerance = " +
+                           format_number(error_tolerance_) +
+                           " needs Scheme = newmark (the estimate is the "
+                           "Newmark step's local error; " +
+                           scheme_names.name(scheme) +
+                           " has another one); use 0."));
     AssertThrow(!is_dynamic() || 2 * beta_ >= gamma_ - 1e-12,
                 ExcMessage(
                   "Time integration/Newmark beta = " + format_number(beta_) +
@@ -109,5 +168,93 @@ namespace ContactDynamics
                            format_number(minimum_time_step_) +
                            " exceeds Time integration/Time step = " +
                            format_number(time_step_) + "."));
+  }
+
+  void
+  TimeIntegrator::parse_alphas(const std::string    &alpha_m,
+                               const std::string    &alpha_f,
+                               const TimeIntegrator &defaults)
+  {
+    const std::string name = scheme_names.name(scheme);
+    if (scheme == Scheme::newmark || scheme == Scheme::quasi_static)
+      {
+        AssertThrow(alpha_m.empty() && alpha_f.empty(),
+                    ExcMessage("Time integration/Alpha m = '" + alpha_m +
+                               "' and Alpha f = '" + alpha_f +
+                               "' apply to Scheme = generalized-alpha or "
+                               "hht-alpha only; leave them empty for " +
+                               name + "."));
+        alpha_m_ = alpha_f_ = 0;
+        return;
+      }
+    // the scheme's beta and gamma replace Newmark's: a changed entry would
+    // be ignored, so it is refused
+    AssertThrow(beta_ == defaults.beta_ && gamma_ == defaults.gamma_,
+                ExcMessage("Time integration/Newmark beta = " +
+                           format_number(beta_) + " and Newmark gamma = " +
+                           format_number(gamma_) + " apply to Scheme = "
+                           "newmark only; " + name +
+                           " takes beta and gamma from its alphas (leave "
+                           "them at 0.25 and 0.5)."));
+    const double rho = spectral_radius_;
+    if (scheme == Scheme::hht_alpha)
+      {
+        AssertThrow(alpha_m.empty() || std::stod(alpha_m) == 0,
+                    ExcMessage("Time integration/Alpha m = " + alpha_m +
+                               " with Scheme = hht-alpha, which has alpha_m "
+                               "= 0: leave it empty, or use "
+                               "generalized-alpha."));
+        if (alpha_f.empty())
+          {
+            AssertThrow(rho >= 0.5,
+                        ExcMessage(
+                          "Time integration/Spectral radius at infinity = " +
+                          format_number(rho) +
+                          " is below what hht-alpha reaches (0.5 to 1, "
+                          "alpha_f up to 1/3); use generalized-alpha for "
+                          "smaller values."));
+            alpha_f_ = (1 - rho) / (1 + rho);
+          }
+        else
+          alpha_f_ = std::stod(alpha_f);
+        alpha_m_ = 0;
+        AssertThrow(alpha_f_ <= 1. / 3 + 1e-12,
+                    ExcMessage("Time integration/Alpha f = " + alpha_f +
+                               " with Scheme = hht-alpha: allowed is [0, "
+                               "1/3] (Hilber's alpha in [-1/3, 0]), where "
+                               "the scheme is unconditionally stable."));
+      }
+    else
+      {
+        AssertThrow(alpha_m.empty() == alpha_f.empty(),
+                    ExcMessage("Time integration/Alpha m = '" + alpha_m +
+                               "' and Alpha f = '" + alpha_f +
+                               "': give both (they replace the Spectral "
+                               "radius at infinity) or neither."));
+        if (alpha_m.empty())
+          {
+            alpha_m_ = (2 * rho - 1) / (rho + 1);
+            alpha_f_ = rho / (rho + 1);
+          }
+        else
+          {
+            alpha_m_ = std::stod(alpha_m);
+            alpha_f_ = std::stod(alpha_f);
+            AssertThrow(alpha_m_ <= alpha_f_,
+                        ExcMessage("Time integration/Alpha m = " + alpha_m +
+                                   " exceeds Alpha f = " + alpha_f +
+                                   ": generalized-alpha is unconditionally "
+                                   "stable for alpha_m <= alpha_f <= 1/2."));
+          }
+      }
+    // second order, and the most high-frequency dissipation for the alphas
+    gamma_ = 0.5 - alpha_m_ + alpha_f_;
+    beta_  = 0.25 * std::pow(1 - alpha_m_ + alpha_f_, 2);
+  }
+
+  std::string
+  TimeIntegrator::scheme_name() const
+  {
+    return scheme_names.name(scheme);
   }
 } // namespace ContactDynamics

@@ -309,6 +309,13 @@ namespace ContactDynamics
       return {};
     }
 
+    /**
+     * The work of the contact forces on the bodies so far, trapezoidal in
+     * time (velocity corrections included).
+     */
+    virtual double
+    contact_work() const = 0;
+
     virtual std::vector<std::string>
     statistics_columns() const = 0;
 

@@ -179,6 +179,12 @@ namespace ContactDynamics
     std::string
     check_step(const VectorType &u) const override;
 
+    double
+    contact_work() const override
+    {
+      return work.work();
+    }
+
     std::vector<std::string>
     statistics_columns() const override;
 

@@ -116,6 +116,16 @@ namespace ContactDynamics
       return mass;
     }
 
+    /**
+     * M a as assemble() puts it into `residual_full` (rows of hanging
+     * nodes added to the rows they follow): `force` (not ghosted) receives
+     * factor M a.
+     */
+    void
+    inertia_force(const VectorType &a,
+                  const double      factor,
+                  VectorType       &force) const;
+
     /** Integral of the stored energy density. */
     double
     elastic_energy(const VectorType &u) const;
@@ -168,6 +178,13 @@ namespace ContactDynamics
     /** Whether the positions were found for this matrix's storage. */
     bool
     positions_fit(const MatrixType &jacobian) const;
+
+    /**
+     * Adds the rows of the hanging nodes of `full` to the rows they follow
+     * and drops them (C^T r); `copy` is scratch.
+     */
+    void
+    move_hanging_rows(VectorType &full, VectorType &copy) const;
 
     /** x itself, or a copy without ghosts for matrix-vector products. */
     const VectorType &

@@ -1,8 +1,11 @@
-// Newmark-beta time integration and the quasi-static special case.
+// Newmark-beta, generalized-alpha (Chung and Hulbert) and HHT-alpha time
+// integration, and the quasi-static special case.
 #ifndef contact_dynamics_mechanics_time_integrator_h
 #define contact_dynamics_mechanics_time_integrator_h
 
 #include <deal.II/base/config.h>
+
+#include <string>
 
 DEAL_II_NAMESPACE_OPEN
 class ParameterHandler;
@@ -16,8 +19,13 @@ namespace ContactDynamics
    * Newmark-beta: with u_{n+1} the unknown,
    *   a_{n+1} = (u_{n+1} - u_n - dt v_n) / (beta dt^2) - (1/(2 beta) - 1) a_n
    *   v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1}).
-   * Both are affine in u_{n+1}: a = c_a u + a_0, v = c_v u + v_0. The
-   * quasi-static scheme has no inertia and no damping. Also holds the
+   * Both are affine in u_{n+1}: a = c_a u + a_0, v = c_v u + v_0.
+   * Generalized-alpha and HHT-alpha keep these kinematics (with their own
+   * beta and gamma) and balance the forces between the steps:
+   *   M ((1 - alpha_m) a_{n+1} + alpha_m a_n)
+   *     + (1 - alpha_f) F_{n+1} + alpha_f F_n = 0,
+   * F = C v + f_int - f_ext + f_contact (Newmark: alpha_m = alpha_f = 0).
+   * The quasi-static scheme has no inertia and no damping. Also holds the
    * time step and the end time of the `Time integration` subsection.
    */
   class TimeIntegrator
@@ -26,6 +34,8 @@ namespace ContactDynamics
     enum class Scheme
     {
       newmark,
+      generalized_alpha,
+      hht_alpha,
       quasi_static
     };
 
@@ -44,8 +54,61 @@ namespace ContactDynamics
     bool
     is_dynamic() const
     {
-      return scheme == Scheme::newmark;
+      return scheme != Scheme::quasi_static;
     }
+
+    /**
+     * Whether the scheme dissipates energy in the bulk (anything but the
+     * trapezoidal rule): the statistics then report this numerical
+     * dissipation in a column of its own.
+     */
+    bool
+    is_dissipative() const
+    {
+      return is_dynamic() &&
+             (alpha_m_ != 0 || alpha_f_ != 0 || beta_ != 0.25 || gamma_ != 0.5);
+    }
+
+    /** Weight of a_n in the balanced inertia (0 for Newmark). */
+    double
+    alpha_m() const
+    {
+      return alpha_m_;
+    }
+
+    /** Weight of F_n in the balanced forces (0 for Newmark). */
+    double
+    alpha_f() const
+    {
+      return alpha_f_;
+    }
+
+    /**
+     * The balance divided by 1 - alpha_f reads M a_eff + F_{n+1} +
+     * old_force_factor() F_n = 0 with a_eff = inertia_factor() a_{n+1} +
+     * old_inertia_factor() a_n.
+     */
+    double
+    inertia_factor() const
+    {
+      return (1 - alpha_m_) / (1 - alpha_f_);
+    }
+
+    double
+    old_inertia_factor() const
+    {
+      return alpha_m_ / (1 - alpha_f_);
+    }
+
+    double
+    old_force_factor() const
+    {
+      return alpha_f_ / (1 - alpha_f_);
+    }
+
+    /** The scheme's name as the parameter file writes it. */
+    std::string
+    scheme_name() const;
 
     /** The nominal time step, to which cut steps grow back. */
     double
@@ -107,6 +170,13 @@ namespace ContactDynamics
       return is_dynamic() ? 1. / (beta_ * dt * dt) : 0.;
     }
 
+    /** d a_eff / d u_{n+1}: the mass factor of the Jacobian */
+    double
+    effective_acceleration_factor(const double dt) const
+    {
+      return acceleration_factor(dt) * inertia_factor();
+    }
+
     /** d v_{n+1} / d u_{n+1}; quasi-static: v = (u_{n+1} - u_n) / dt */
     double
     velocity_factor(const double dt) const
@@ -155,11 +225,20 @@ namespace ContactDynamics
     }
 
   private:
+    /** alpha_m, alpha_f, beta and gamma of the scheme. */
+    void
+    parse_alphas(const std::string    &alpha_m,
+                 const std::string    &alpha_f,
+                 const TimeIntegrator &defaults);
+
     // the defaults of the parameter file
     Scheme    scheme             = Scheme::newmark;
     Predictor predictor          = Predictor::velocity;
     double    beta_              = 0.25;
     double    gamma_             = 0.5;
+    double    alpha_m_           = 0;
+    double    alpha_f_           = 0;
+    double    spectral_radius_   = 0.8;
     double    time_step_         = 0.025;
     double    end_time_          = 1.;
     double    minimum_time_step_ = 1e-6;
