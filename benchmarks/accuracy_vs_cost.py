@@ -134,6 +134,8 @@ def variant_label(meta):
     q = meta.get("quadrature")
     if q not in (None, "", "-") and int(float(q)) != 2:
         parts.append(f"{int(float(q))} qp")
+    if meta.get("scheme") not in (None, "", "newmark"):
+        parts.append(f"{meta['scheme']}, undamped")
     if meta.get("problem") == "bouncing_block" and str(meta.get("refinement")) in ("2", "2.0") \
             and meta.get("reference") not in (None, "", "(is a reference)"):
         parts.append("mesh x2")
@@ -154,6 +156,19 @@ def formulation_changes(formulation, stabilization=None, jacobian="exact", quadr
         ch[sub + "Segment quadrature points"] = quadrature
     if c_n is not None:
         ch[sub + "c_n"] = c_n
+    return ch
+
+
+# generalized-alpha with rho_inf = 0.8 instead of Newmark, and no Rayleigh
+# damping (issue 19): the scheme's label and its parameter changes
+GENERALIZED_ALPHA = "gen.-alpha 0.8"
+
+
+def generalized_alpha_changes(bodies):
+    ch = {"Time integration/Scheme": "generalized-alpha",
+          "Time integration/Spectral radius at infinity": 0.8}
+    for body in bodies:
+        ch[f"Body {body}/Rayleigh stiffness coefficient"] = 0
     return ch
 
 
@@ -194,6 +209,16 @@ def build_runs(mode):
                     rid = f"bar_{form}_{stab.replace(' ', '_')}_n{n}_dt{dt:g}"
                     runs.append(Run("bar_impact", rid, "prm/examples/bar_impact.prm", ch, meta,
                                     keep_surface=True))
+    # generalized-alpha (the bar has no damping): what its dissipation costs
+    for dt in dts:
+        meta = dict(formulation="mortar", stabilization="persistency", scheme=GENERALIZED_ALPHA,
+                    jacobian="exact", quadrature="-", refinement="", elements=80, dt=dt)
+        ch = formulation_changes("mortar", stabilization="persistency", c_n=10)
+        ch.update(generalized_alpha_changes([]))
+        ch.update({"Scene/Bar impact/Elements along bar": 80, "Time integration/Time step": dt,
+                   "Output/VTU interval": NEVER})
+        runs.append(Run("bar_impact", f"bar_mortar_persistency_ga_n80_dt{dt:g}",
+                        "prm/examples/bar_impact.prm", ch, meta, keep_surface=True))
 
     # Patch test: one quasi-static step
     for form in ["mortar", "nts"]:
@@ -252,6 +277,23 @@ def build_runs(mode):
         runs.append(Run("bouncing_block", f"bb_mortar_persistency_r2_dt{dt:g}_T{end:g}",
                         "prm/bouncing_block/mortar_stabilized.prm",
                         bb_changes("mortar", "persistency", dt, 2), meta))
+    # generalized-alpha without Rayleigh damping, against its own fine
+    # reference (the undamped model: the numerical damping vanishes with dt)
+    ga_ref = f"bbref_mortar_persistency_ga_T{end:g}"
+    ga = generalized_alpha_changes(["block", "substrate"])
+    meta = dict(formulation="mortar", stabilization="persistency", scheme=GENERALIZED_ALPHA,
+                jacobian="exact", quadrature="-", refinement=2, elements="", dt=ref_dt,
+                end_time=end)
+    runs.append(Run("bouncing_block", ga_ref, "prm/bouncing_block/mortar_stabilized.prm",
+                    dict(bb_changes("mortar", "persistency", ref_dt, 2), **ga), meta,
+                    reference=True))
+    for dt in bb_dts:
+        meta = dict(formulation="mortar", stabilization="persistency", scheme=GENERALIZED_ALPHA,
+                    jacobian="exact", quadrature="-", refinement=1, elements="", dt=dt,
+                    end_time=end, reference=ga_ref, mortar_reference=ga_ref)
+        runs.append(Run("bouncing_block", f"bb_mortar_persistency_ga_dt{dt:g}_T{end:g}",
+                        "prm/bouncing_block/mortar_stabilized.prm",
+                        dict(bb_changes("mortar", "persistency", dt, 1), **ga), meta))
 
     # Ironing, frictionless, shortened, against a finer mortar reference.
     # The shipped files differ only in the formulation block; their own
@@ -283,6 +325,15 @@ def build_runs(mode):
         rid = f"iron_{form.replace(' ', '_')}_r{f:g}_dt{dt:g}_T{end:g}"
         runs.append(Run("ironing", rid, files[form], iron_changes(dt, f), meta,
                         keep_surface=True))
+    # generalized-alpha without Rayleigh damping against the (damped) reference:
+    # how far the undamped model with numerical damping is from the paper's
+    for f in factors:
+        meta = dict(formulation="mortar", stabilization="velocity persistency",
+                    scheme=GENERALIZED_ALPHA, jacobian="exact", quadrature="-", refinement=f,
+                    elements="", dt=0.01, end_time=end, reference=ref_id)
+        ch = dict(iron_changes(0.01, f), **generalized_alpha_changes(["tool", "substrate"]))
+        runs.append(Run("ironing", f"iron_mortar_ga_r{f:g}_dt0.01_T{end:g}", files["mortar"],
+                        ch, meta, keep_surface=True))
     return runs
 
 
@@ -614,7 +665,8 @@ def history_error_avg2(stats, ref, column):
 # Collecting results
 # ---------------------------------------------------------------------------
 
-COLUMNS = ["run_id", "problem", "formulation", "stabilization", "jacobian", "quadrature",
+COLUMNS = ["run_id", "problem", "formulation", "stabilization", "scheme", "jacobian",
+           "quadrature",
            "refinement", "elements", "dt", "end_time", "h",
            "err_half_width", "err_peak_pressure", "err_profile_l2",
            "err_duration", "err_energy", "err_force_l2", "err_force_avg2", "energy_change",
@@ -738,8 +790,8 @@ def read_results_csv(path):
     with open(path, newline="") as f:
         for r in csv.DictReader(f):
             for k, v in list(r.items()):
-                if k in ("run_id", "problem", "formulation", "stabilization", "jacobian",
-                         "status", "message", "reference"):
+                if k in ("run_id", "problem", "formulation", "stabilization", "scheme",
+                         "jacobian", "status", "message", "reference"):
                     continue
                 try:
                     r[k] = float(v) if v != "" else ""
@@ -826,7 +878,9 @@ def tables(rows):
                    "the monitored node at the block's bottom centre (-1.5, 0); its gap is the "
                    "block's height above the substrate (negative: penetration). Energy "
                    "balance: max |balance error| / max (kinetic + elastic energy) of the run "
-                   "itself.\n")
+                   "itself. The gen.-alpha runs (no Rayleigh damping) are compared with a "
+                   "reference of their own (gen.-alpha, undamped, factor 2, smallest dt / 4) "
+                   "in every column.\n")
         out.append(md_table(["variant", "dt", "factor", "F_y (family)", "KE (family)",
                              "F_y", "F_y 2-step avg",
                              "KE", "probe p", "probe gap", "energy balance",
@@ -849,7 +903,9 @@ def tables(rows):
         out.append("F_y, F_x: total contact force on the tool; probe p: contact pressure of the "
                    "tool-tip node (1.2, 4.02); probe u: its displacement at the end relative to "
                    "the tool's deformation there (displacement minus the prescribed motion of "
-                   "the top); energy balance: max |balance error| / max (kinetic + elastic).\n")
+                   "the top); energy balance: max |balance error| / max (kinetic + elastic). "
+                   "The gen.-alpha run has no Rayleigh damping and is compared with the damped "
+                   "reference: its errors include the difference of the two models.\n")
         out.append(md_table(["variant", "factor", "dt", "F_y", "F_x", "probe p", "probe u",
                              "energy balance", "Newton", "cuts", "wall (s)", "MB", "status"],
                             [[r["label"] + (" (reference)" if r.get("reference") ==

@@ -30,18 +30,21 @@ REPO = Path(__file__).resolve().parent.parent
 VARIANTS = {
     "bouncing_block": [("mortar_stabilized", "stabilized mortar"),
                        ("mortar_static", "static mortar"),
-                       ("nts", "NTS")],
+                       ("nts", "NTS"),
+                       ("mortar_generalized_alpha", "stabilized mortar, gen.-alpha 0.8, undamped")],
     "ironing": [("mortar", "mortar"),
                 ("nts", "NTS"),
                 ("nts_smoothed", "NTS, smoothed normals"),
                 ("mortar_friction", "mortar, mu = 0.25"),
-                ("nts_smoothed_friction", "NTS smoothed, mu = 0.25")],
+                ("nts_smoothed_friction", "NTS smoothed, mu = 0.25"),
+                ("mortar_generalized_alpha", "mortar, gen.-alpha 0.8, undamped")],
 }
 STYLE = {"mortar_stabilized": ("tab:blue", "-"), "mortar_static": ("tab:orange", "--"),
          "nts": ("tab:red", ":"), "mortar": ("tab:blue", "-"),
          "nts_smoothed": ("tab:orange", "--"), "mortar_friction": ("tab:green", "-."),
-         "nts_smoothed_friction": ("tab:purple", (0, (5, 1, 1, 1)))}
-FRICTIONLESS = ["mortar", "nts", "nts_smoothed"]
+         "nts_smoothed_friction": ("tab:purple", (0, (5, 1, 1, 1))),
+         "mortar_generalized_alpha": ("tab:cyan", (0, (3, 1)))}
+FRICTIONLESS = ["mortar", "nts", "nts_smoothed", "mortar_generalized_alpha"]
 FRICTION = ["mortar_friction", "nts_smoothed_friction"]
 
 
@@ -231,6 +234,12 @@ def stats_series(name):
     return lambda run: (run.col("time"), run.col(name))
 
 
+def dissipation_series(run):
+    """series() for overlay: Rayleigh damping plus numerical dissipation against time."""
+    numerical = np.nan_to_num(run.col("numerical_dissipation"))
+    return run.col("time"), run.col("damping_dissipation") + numerical
+
+
 def bouncing_block_figures(runs, figs, args, spans):
     """The bouncing block figures (energies, Newton iterations, pressure snapshot, balance)."""
     for name, label in [("elastic_energy", "elastic energy (J/m)"),
@@ -240,6 +249,9 @@ def bouncing_block_figures(runs, figs, args, spans):
     overlay(runs, figs / "bouncing_block_cumulative_newton.png",
             stats_series("cumulative_newton_iterations"), "cumulative Newton iterations",
             "Bouncing block: cumulative Newton iterations", spans=spans)
+    overlay(runs, figs / "bouncing_block_dissipation.png", dissipation_series,
+            "dissipated energy (J/m)",
+            "Bouncing block: Rayleigh damping + numerical dissipation", spans=spans)
     overlay(runs, figs / "bouncing_block_energy_balance_error.png",
             stats_series("energy_balance_error"), "energy balance error (J/m)",
             "Bouncing block: energy balance error", spans=spans)
@@ -281,6 +293,8 @@ def ironing_figures(runs, figs, args, analyses, f_pass):
                 f"Ironing ({what}): pressure spectrum, t >= {args.window_start:g} s, {window}",
                 xlabel="frequency (Hz)", logy=True, xlim=(0, 0.5 / spectrum_dt(runs, args)),
                 vlines=[(f_pass, f"element passage {f_pass:.3g} Hz")])
+    overlay(runs, figs / "ironing_dissipation.png", dissipation_series, "dissipated energy",
+            "Ironing: Rayleigh damping + numerical dissipation")
     overlay(runs, figs / "ironing_energy_balance_error.png", stats_series("energy_balance_error"),
             "energy balance error", "Ironing: energy balance error")
     overlay(runs, figs / "ironing_cumulative_newton.png",
@@ -327,6 +341,8 @@ def metrics(run, spans_merge_gap, signal):
                ke_contact=np.max(ke[in_contact]) if in_contact.any() else math.nan,
                eb_max=eb.max(), eb_rel=100 * eb.max() / total if total > 0 else math.nan,
                contact_work_max=np.nanmax(run.col("contact_work")),
+               damping_end=run.col("damping_dissipation")[-1],
+               numerical_end=run.col("numerical_dissipation")[-1],
                newton=int(newton), newton_per_step=newton / max(steps, 1),
                cuts=int(run.col("time_step_cuts")[-1]), wall=run.wall)
     row.update(signal(run, spans) or {})
@@ -365,7 +381,9 @@ def columns(unit, bouncing):
     cols += [("ke_before", f"peak KE before contact{unit}", ".4g"),
              ("ke_contact", f"peak KE in contact{unit}", ".4g"),
              ("eb_max", f"max abs energy balance error{unit}", ".4g"),
-             ("eb_rel", "same, % of max(KE+EE)", ".3g")]
+             ("eb_rel", "same, % of max(KE+EE)", ".3g"),
+             ("damping_end", f"Rayleigh damping dissipation at the end{unit}", ".4g"),
+             ("numerical_end", f"numerical dissipation at the end{unit}", ".4g")]
     if bouncing:
         cols.append(("contact_work_max", f"max contact work{unit}", ".4g"))
     signal = "F_y" if bouncing else "p"
@@ -383,7 +401,11 @@ def common_notes(args):
     return ["Contact times are those of the first statistics row with active contact nodes "
             "(end of the step in which contact is detected).",
             "Energy balance error = KE + EE + dissipation - external work - initial energy; "
-            "relative to the run's largest KE + EE (kinetic plus elastic energy).",
+            "relative to the run's largest KE + EE (kinetic plus elastic energy). The "
+            "dissipation is the Rayleigh damping's, friction's and, with generalized-alpha, "
+            "the time integrator's (numerical dissipation: what the bulk lost beyond its "
+            "physical account), so the error is the work of the contact forces that friction "
+            "does not explain.",
             f"Signal analysis: the signal is interpolated linearly onto a uniform grid (step "
             f"below), a linear trend removed, {window} applied; dominant f = largest "
             f"single-sided amplitude (2|FFT|/sum(window)) at f >= {args.min_frequency:g} Hz, "
