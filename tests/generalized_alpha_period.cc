@@ -86,48 +86,16 @@ main()
     {
       dealii::deallog << s.name << std::endl;
       dealii::ParameterHandler prm;
-      read_test_parameters("period.prm",
-                           R"(
-subsection Scene
-  set Scene = block
-  subsection Block
-    set Size = 2, 0.5
-    set Subdivisions = 1, 1
-  end
-end
-subsection Body body
-  set Young's modulus = 200
-  set Poisson's ratio = 0
-  set Density = 3
-  set Initial displacement = 0.001*x; 0
-end
-subsection Boundary conditions
-  set Dirichlet = left: xy: 0; right: y: 0
-end
-subsection Time integration
-  set Scheme = )" + s.scheme + R"(
-  set Spectral radius at infinity = )" + s.rho +
-                             R"(
-  set Alpha m = )" + s.alpha_m +
-                             R"(
-  set Alpha f = )" + s.alpha_f +
-                             R"(
-end
-subsection Output
-  set Output directory = output_generalized_alpha
-  set VTU interval = 0
-end
-)",
-                           prm);
+      read_axial_mode_parameters("  set Scheme = " + s.scheme +
+                                   "\n  set Spectral radius at infinity = " +
+                                   s.rho + "\n  set Alpha m = " + s.alpha_m +
+                                   "\n  set Alpha f = " + s.alpha_f,
+                                 prm);
       std::ostringstream            screen;
       ContactDynamics::Simulator<2> simulator(prm, screen);
       simulator.initialize();
-      dealii::types::global_dof_index tip = 0;
-      for (const auto &cell :
-           simulator.get_dof_handler().active_cell_iterators())
-        for (unsigned int v = 0; v < 4; ++v)
-          if (cell->vertex(v).distance(dealii::Point<2>(L, 0)) < 1e-12)
-            tip = cell->vertex_dof_index(v, 0);
+      const auto tip =
+        vertex_dof(simulator.get_dof_handler(), dealii::Point<2>(L, 0), 0);
 
       // the recursion, from the consistent initial acceleration
       const auto     A = amplification(omega * dt, s.am, s.af);

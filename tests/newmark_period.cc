@@ -18,46 +18,20 @@ int
 main()
 {
   initlog();
-  const double E = 200, rho = 3, L = 2, h = 0.5;
+  const double E = 200, rho = 3, L = 2;
   const double omega = std::sqrt(3 * E / (rho * L * L));
   const double T     = 2 * M_PI / omega;
   const double dt    = T / 20;
 
   dealii::ParameterHandler prm;
-  read_test_parameters("period.prm",
-                       R"(
-subsection Scene
-  set Scene = block
-  subsection Block
-    set Size = 2, 0.5
-    set Subdivisions = 1, 1
-  end
-end
-subsection Body body
-  set Young's modulus = 200
-  set Poisson's ratio = 0
-  set Density = 3
-  set Initial displacement = 0.001*x; 0
-end
-subsection Boundary conditions
-  set Dirichlet = left: xy: 0; right: y: 0
-end
-subsection Output
-  set Output directory = output_period
-  set VTU interval = 0
-end
-)",
-                       prm);
+  read_axial_mode_parameters("", prm);
   std::ostringstream            screen;
   ContactDynamics::Simulator<2> simulator(prm, screen);
   simulator.initialize();
 
   // x displacement of the vertex (L, 0)
-  dealii::types::global_dof_index tip = 0;
-  for (const auto &cell : simulator.get_dof_handler().active_cell_iterators())
-    for (unsigned int v = 0; v < 4; ++v)
-      if (cell->vertex(v).distance(dealii::Point<2>(L, 0)) < 1e-12)
-        tip = cell->vertex_dof_index(v, 0);
+  const auto tip =
+    vertex_dof(simulator.get_dof_handler(), dealii::Point<2>(L, 0), 0);
 
   // For u_n = U cos(Omega n dt): u_{n+1} + u_{n-1} = 2 cos(Omega dt) u_n;
   // fit cos(Omega dt) by least squares over 200 steps.

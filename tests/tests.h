@@ -236,6 +236,59 @@ read_test_parameters(const std::string        &filename,
   ContactDynamics::read_parameters(filename, prm);
 }
 
+// The one-element axial mode of newmark_period.cc and
+// generalized_alpha_period.cc: a Q1 element [0,2]x[0,0.5], E = 200, nu = 0,
+// rho = 3, clamped on its left side and sliding on its right side, u_x =
+// 0.001 x at t = 0 (one free mode, omega^2 = 3 E / (rho L^2)), the entries
+// `time_integration` in its subsection, read into `prm`.
+inline void
+read_axial_mode_parameters(const std::string        &time_integration,
+                           dealii::ParameterHandler &prm)
+{
+  read_test_parameters("axial_mode.prm",
+                       R"(
+subsection Scene
+  set Scene = block
+  subsection Block
+    set Size = 2, 0.5
+    set Subdivisions = 1, 1
+  end
+end
+subsection Body body
+  set Young's modulus = 200
+  set Poisson's ratio = 0
+  set Density = 3
+  set Initial displacement = 0.001*x; 0
+end
+subsection Boundary conditions
+  set Dirichlet = left: xy: 0; right: y: 0
+end
+subsection Time integration
+)" + time_integration + R"(
+end
+subsection Output
+  set Output directory = output_axial_mode
+  set VTU interval = 0
+end
+)",
+                       prm);
+}
+
+// The degree of freedom of `component` at the vertex at `point` (of a Q1
+// mesh), or 0 if no vertex is there.
+template <typename DoFHandlerType, typename PointType>
+dealii::types::global_dof_index
+vertex_dof(const DoFHandlerType &dof_handler,
+           const PointType      &point,
+           const unsigned int    component)
+{
+  for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto v : cell->vertex_indices())
+      if (cell->vertex(v).distance(point) < 1e-12)
+        return cell->vertex_dof_index(v, component);
+  return 0;
+}
+
 using ParameterChanges = std::vector<std::pair<std::string, std::string>>;
 
 // Reads a shipped parameter file (path relative to the repository) with
