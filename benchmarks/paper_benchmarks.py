@@ -31,20 +31,23 @@ VARIANTS = {
     "bouncing_block": [("mortar_stabilized", "stabilized mortar"),
                        ("mortar_static", "static mortar"),
                        ("nts", "NTS"),
+                       ("mortar_undamped", "stabilized mortar, undamped"),
                        ("mortar_generalized_alpha", "stabilized mortar, gen.-alpha 0.8, undamped")],
     "ironing": [("mortar", "mortar"),
                 ("nts", "NTS"),
                 ("nts_smoothed", "NTS, smoothed normals"),
                 ("mortar_friction", "mortar, mu = 0.25"),
                 ("nts_smoothed_friction", "NTS smoothed, mu = 0.25"),
+                ("mortar_undamped", "mortar, undamped"),
                 ("mortar_generalized_alpha", "mortar, gen.-alpha 0.8, undamped")],
 }
 STYLE = {"mortar_stabilized": ("tab:blue", "-"), "mortar_static": ("tab:orange", "--"),
          "nts": ("tab:red", ":"), "mortar": ("tab:blue", "-"),
          "nts_smoothed": ("tab:orange", "--"), "mortar_friction": ("tab:green", "-."),
          "nts_smoothed_friction": ("tab:purple", (0, (5, 1, 1, 1))),
+         "mortar_undamped": ("tab:gray", (0, (1, 1))),
          "mortar_generalized_alpha": ("tab:cyan", (0, (3, 1)))}
-FRICTIONLESS = ["mortar", "nts", "nts_smoothed", "mortar_generalized_alpha"]
+FRICTIONLESS = ["mortar", "nts", "nts_smoothed", "mortar_undamped", "mortar_generalized_alpha"]
 FRICTION = ["mortar_friction", "nts_smoothed_friction"]
 
 
@@ -143,7 +146,10 @@ def signal_analysis(t, y, t0, t1, args, dt, f_mark=None):
     largest amplitude at f >= --min-frequency; the spectrum only if the window
     is at least --min-window long. The trend for the RMS deviation is a centred
     moving average over --trend-window. With f_mark, amp_mark is the largest
-    amplitude within 0.6 Hz of f_mark, in % of the mean."""
+    amplitude within 0.6 Hz of f_mark, in % of the mean. alternation: the RMS
+    of the second difference of the resampled signal divided by 4 (the
+    amplitude of a step-to-step alternation, the Nyquist frequency), in % of
+    the mean."""
     out = dict(mean=math.nan, f_dom=math.nan, amp_rel=math.nan, rms_rel=math.nan, spectrum=None)
     t1 = min(t1, t[-1]) if len(t) else t0
     n = int(math.floor((t1 - t0) / dt + 1e-9)) + 1
@@ -152,6 +158,7 @@ def signal_analysis(t, y, t0, t1, args, dt, f_mark=None):
     grid = t0 + dt * np.arange(n)
     yg = np.interp(grid, t, y)
     out["mean"] = mean = yg.mean()
+    out["alternation"] = 100 * np.sqrt(np.mean(np.diff(yg, 2) ** 2)) / 4 / abs(mean)
     m = int(round(args.trend_window / dt)) // 2 * 2 + 1
     if n >= 2 * m:
         smooth = np.convolve(yg, np.ones(m) / m, mode="valid")
@@ -392,7 +399,8 @@ def columns(unit, bouncing):
                    ("mean", f"mean {signal}", ".4g"), ("f_dom", "dominant f (Hz)", ".4g"),
                    ("amp_rel", "amplitude (% of mean)", ".3g")] + \
         ([] if bouncing else [("amp_mark", "amplitude at element passage (% of mean)", ".3g")]) + \
-        [("rms_rel", "RMS dev. from trend (% of mean)", ".3g")]
+        [("rms_rel", "RMS dev. from trend (% of mean)", ".3g"),
+         ("alternation", "step-to-step alternation (% of mean)", ".3g")]
 
 
 def common_notes(args):
@@ -410,7 +418,10 @@ def common_notes(args):
             f"below), a linear trend removed, {window} applied; dominant f = largest "
             f"single-sided amplitude (2|FFT|/sum(window)) at f >= {args.min_frequency:g} Hz, "
             f"only for windows of at least {args.min_window:g} s. RMS dev. from trend = RMS of "
-            f"the signal minus its centred {args.trend_window:g} s moving average, in % of the mean."]
+            f"the signal minus its centred {args.trend_window:g} s moving average, in % of the mean. "
+            "Step-to-step alternation = RMS of the resampled signal's second difference / 4 (the "
+            "amplitude of an alternation at the Nyquist frequency; a resolved oscillation of "
+            "angular frequency w contributes (w dt)^2 / 4 of its amplitude), in % of the mean."]
 
 
 def shown(path):

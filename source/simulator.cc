@@ -1087,6 +1087,8 @@ namespace ContactDynamics
   {
     dt_current = dt;
     u_new      = trial;
+    if (balances_between_steps())
+      compute_old_forces();
     assemble(true, residual_out, jacobian);
     structure_changed = true;
     return jacobian;

@@ -442,7 +442,12 @@ namespace ContactDynamics
     committed_active_nodes       = mesh[2];
     previous_active_nodes        = mesh[3];
     last_vtu_step                = mesh[4];
-    const auto &e                = data.get("energies", 9);
+    // (8 values: written before the numerical dissipation was counted)
+    const auto &e                = data.get("energies", 0);
+    AssertThrow(e.size() == 8 || e.size() == 9,
+                ExcMessage("The checkpoint has " + std::to_string(e.size()) +
+                           " energies where 9 are expected: it was written "
+                           "by another version."));
     energies.kinetic             = e[0];
     energies.elastic             = e[1];
     energies.dissipated          = e[2];
@@ -451,7 +456,7 @@ namespace ContactDynamics
     energies.frictional          = e[5];
     energies.obstacle            = e[6];
     energies.transfer            = e[7];
-    energies.numerical           = e[8];
+    energies.numerical           = e.size() > 8 ? e[8] : 0.;
     // a shorter Time step than the run's (the solver settings may change)
     dt_next = std::min(dt_next, integrator.time_step());
 

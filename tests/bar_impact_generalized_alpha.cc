@@ -9,6 +9,10 @@
 // the wave (c dt / h = 0.5). A checkpoint written in contact and restarted
 // must continue bitwise: the balance between the steps needs the committed
 // forces F_n, which the checkpoint holds through the committed reactions.
+// (The bar's momentum change is the sum of the balanced contact forces
+// (1 - alpha_f) f_{n+1} + alpha_f f_n: were the contact forces missing
+// from F_n, the reported forces f_{n+1} would add up to 1 / (1 - alpha_f) =
+// 1.8 times the impulse, and the mean-force check would fail.)
 #include <deal.II/dofs/dof_handler.h>
 
 #include <contact_dynamics/output/checkpoint.h>

@@ -2,7 +2,8 @@
 // 1. dP/dF of each material model against differences of P(F);
 // 2. the global Newton Jacobian (inertia, Rayleigh damping, neo-Hookean
 //    stiffness) against differences of the global residual, at a random
-//    large-deformation state, for dynamics and for quasi-statics.
+//    large-deformation state, for Newmark, generalized-alpha, HHT-alpha
+//    and quasi-statics.
 #include <deal.II/base/tensor.h>
 
 #include <contact_dynamics/mechanics/material.h>
@@ -138,5 +139,9 @@ main()
   check_material("linear elastic");
   check_material("neo-Hookean");
   check_jacobian("newmark");
+  // the mass factor (1 - alpha_m) / ((1 - alpha_f) beta dt^2) and the
+  // balance with the committed forces (rho_inf = 0.8)
+  check_jacobian("generalized-alpha");
+  check_jacobian("hht-alpha");
   check_jacobian("quasi-static");
 }

@@ -176,9 +176,23 @@ namespace ContactDynamics
                                const TimeIntegrator &defaults)
   {
     const std::string name = scheme_names.name(scheme);
+    // an entry that the scheme would ignore is refused, not ignored
+    const bool alphas_given = !alpha_m.empty() || !alpha_f.empty();
+    AssertThrow(spectral_radius_ == defaults.spectral_radius_ ||
+                  (!alphas_given && scheme != Scheme::newmark &&
+                   scheme != Scheme::quasi_static),
+                ExcMessage("Time integration/Spectral radius at infinity = " +
+                           format_number(spectral_radius_) +
+                           (alphas_given ?
+                              std::string(" is replaced by the Alpha m and "
+                                          "Alpha f given") :
+                              " applies to Scheme = generalized-alpha or "
+                              "hht-alpha only, not to " + name) +
+                           ": leave it at its default " +
+                           format_number(defaults.spectral_radius_) + "."));
     if (scheme == Scheme::newmark || scheme == Scheme::quasi_static)
       {
-        AssertThrow(alpha_m.empty() && alpha_f.empty(),
+        AssertThrow(!alphas_given,
                     ExcMessage("Time integration/Alpha m = '" + alpha_m +
                                "' and Alpha f = '" + alpha_f +
                                "' apply to Scheme = generalized-alpha or "
@@ -187,15 +201,18 @@ namespace ContactDynamics
         alpha_m_ = alpha_f_ = 0;
         return;
       }
-    // the scheme's beta and gamma replace Newmark's: a changed entry would
-    // be ignored, so it is refused
-    AssertThrow(beta_ == defaults.beta_ && gamma_ == defaults.gamma_,
-                ExcMessage("Time integration/Newmark beta = " +
-                           format_number(beta_) + " and Newmark gamma = " +
-                           format_number(gamma_) + " apply to Scheme = "
-                           "newmark only; " + name +
+    // the scheme's beta and gamma replace Newmark's
+    std::vector<std::string> changed;
+    if (beta_ != defaults.beta_)
+      changed.push_back("Newmark beta = " + format_number(beta_));
+    if (gamma_ != defaults.gamma_)
+      changed.push_back("Newmark gamma = " + format_number(gamma_));
+    AssertThrow(changed.empty(),
+                ExcMessage("Time integration/" + join(changed, " and ") +
+                           " applies to Scheme = newmark only; " + name +
                            " takes beta and gamma from its alphas (leave "
-                           "them at 0.25 and 0.5)."));
+                           "Newmark beta at 0.25 and Newmark gamma at "
+                           "0.5)."));
     const double rho = spectral_radius_;
     if (scheme == Scheme::hht_alpha)
       {
