@@ -1356,8 +1356,10 @@ def main():
         rows = collect(runs)
         if args.only and csv_path.is_file():  # keep the other problems' rows
             mine = {r["run_id"] for r in rows}
+            # (with --match the other runs of the same problems stay too)
             old = [r for r in read_results_csv(csv_path)
-                   if r["run_id"] not in mine and r["problem"] not in set(args.only.split(","))]
+                   if r["run_id"] not in mine and
+                   (args.match or r["problem"] not in set(args.only.split(",")))]
             rows = sorted(old + rows, key=lambda r: order[r["problem"]])
         write_csv(rows, csv_path)
         if not args.only:  # a copy per mode, so that quick and full results coexist
@@ -1413,6 +1415,10 @@ def main():
         args.doc_tables.parent.mkdir(parents=True, exist_ok=True)
         args.doc_tables.write_text("\n".join(header) + text)
     print(text)
+    if args.match:
+        print("--match: the figures are not redrawn (they need every run; "
+              "--plots-only draws them from the CSV)")
+        return
     args.figures.mkdir(parents=True, exist_ok=True)
     for problem in PARETO:
         plot_pareto(rows, problem, args.figures / f"{problem}_pareto.png")
