@@ -1246,7 +1246,8 @@ def parse_args():
                     help="comma-separated problems: " + ", ".join(PROBLEMS))
     ap.add_argument("--match", default="",
                     help="with --only: only the runs whose id matches this regular expression "
-                         "(e.g. '_ga_': the generalized-alpha points and their references)")
+                         "and the references they are compared with (e.g. '_ga_': the "
+                         "generalized-alpha points)")
     ap.add_argument("--reuse", action="store_true",
                     help="keep the results of runs whose parameters and executable are unchanged")
     ap.add_argument("--plots-only", action="store_true",
@@ -1297,7 +1298,11 @@ def main():
                 sys.exit(f"--only: unknown problem(s) {', '.join(sorted(unknown))}")
             runs = [r for r in runs if r.problem in keep]
         if args.match:
-            runs = [r for r in runs if re.search(args.match, r.id)]
+            # with the references the matched runs are compared with
+            chosen = {r.id for r in runs if re.search(args.match, r.id)}
+            chosen |= {r.meta[k] for r in runs if r.id in chosen
+                       for k in ("reference", "mortar_reference") if r.meta.get(k)}
+            runs = [r for r in runs if r.id in chosen]
         if args.dry_run:
             bad = 0
             for run in runs:

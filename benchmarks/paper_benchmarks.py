@@ -243,7 +243,8 @@ def stats_series(name):
 
 def dissipation_series(run):
     """series() for overlay: Rayleigh damping plus numerical dissipation against time."""
-    numerical = np.nan_to_num(run.col("numerical_dissipation"))
+    numerical = run.col("numerical_dissipation")
+    numerical = np.where(np.isnan(numerical), 0.0, numerical)
     return run.col("time"), run.col("damping_dissipation") + numerical
 
 
@@ -258,7 +259,7 @@ def bouncing_block_figures(runs, figs, args, spans):
             "Bouncing block: cumulative Newton iterations", spans=spans)
     overlay(runs, figs / "bouncing_block_dissipation.png", dissipation_series,
             "dissipated energy (J/m)",
-            "Bouncing block: Rayleigh damping + numerical dissipation", spans=spans)
+            "Bouncing block: Rayleigh damping + numerical dissipation", spans=spans, logy=True)
     overlay(runs, figs / "bouncing_block_energy_balance_error.png",
             stats_series("energy_balance_error"), "energy balance error (J/m)",
             "Bouncing block: energy balance error", spans=spans)
@@ -301,7 +302,7 @@ def ironing_figures(runs, figs, args, analyses, f_pass):
                 xlabel="frequency (Hz)", logy=True, xlim=(0, 0.5 / spectrum_dt(runs, args)),
                 vlines=[(f_pass, f"element passage {f_pass:.3g} Hz")])
     overlay(runs, figs / "ironing_dissipation.png", dissipation_series, "dissipated energy",
-            "Ironing: Rayleigh damping + numerical dissipation")
+            "Ironing: Rayleigh damping + numerical dissipation", logy=True)
     overlay(runs, figs / "ironing_energy_balance_error.png", stats_series("energy_balance_error"),
             "energy balance error", "Ironing: energy balance error")
     overlay(runs, figs / "ironing_cumulative_newton.png",
@@ -421,7 +422,8 @@ def common_notes(args):
             f"the signal minus its centred {args.trend_window:g} s moving average, in % of the mean. "
             "Step-to-step alternation = RMS of the resampled signal's second difference / 4 (the "
             "amplitude of an alternation at the Nyquist frequency; a resolved oscillation of "
-            "angular frequency w contributes (w dt)^2 / 4 of its amplitude), in % of the mean."]
+            "amplitude A and angular frequency w contributes sin^2(w dt / 2) A / sqrt(2)), in % "
+            "of the mean."]
 
 
 def shown(path):

@@ -445,9 +445,10 @@ namespace ContactDynamics
     // (8 values: written before the numerical dissipation was counted)
     const auto &e                = data.get("energies", 0);
     AssertThrow(e.size() == 8 || e.size() == 9,
-                ExcMessage("The checkpoint has " + std::to_string(e.size()) +
-                           " energies where 9 are expected: it was written "
-                           "by another version."));
+                ExcMessage("The checkpoint '" + checkpoint + "' has " +
+                           std::to_string(e.size()) +
+                           " energies where 8 or 9 are expected: it was "
+                           "written by another version."));
     energies.kinetic             = e[0];
     energies.elastic             = e[1];
     energies.dissipated          = e[2];

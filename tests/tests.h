@@ -275,7 +275,7 @@ end
 }
 
 // The degree of freedom of `component` at the vertex at `point` (of a Q1
-// mesh), or 0 if no vertex is there.
+// mesh); throws if no vertex is there.
 template <typename DoFHandlerType, typename PointType>
 dealii::types::global_dof_index
 vertex_dof(const DoFHandlerType &dof_handler,
@@ -286,6 +286,7 @@ vertex_dof(const DoFHandlerType &dof_handler,
     for (const auto v : cell->vertex_indices())
       if (cell->vertex(v).distance(point) < 1e-12)
         return cell->vertex_dof_index(v, component);
+  AssertThrow(false, dealii::ExcMessage("vertex_dof(): no vertex there"));
   return 0;
 }
 

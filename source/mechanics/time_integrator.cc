@@ -177,7 +177,15 @@ namespace ContactDynamics
   {
     const std::string name = scheme_names.name(scheme);
     // an entry that the scheme would ignore is refused, not ignored
-    const bool alphas_given = !alpha_m.empty() || !alpha_f.empty();
+    // (hht-alpha: Alpha m may only repeat its 0)
+    const bool alphas_given =
+      !alpha_f.empty() || (scheme != Scheme::hht_alpha && !alpha_m.empty());
+    AssertThrow(scheme != Scheme::generalized_alpha ||
+                  alpha_m.empty() == alpha_f.empty(),
+                ExcMessage("Time integration/Alpha m = '" + alpha_m +
+                           "' and Alpha f = '" + alpha_f +
+                           "': give both (they replace the Spectral "
+                           "radius at infinity) or neither."));
     AssertThrow(spectral_radius_ == defaults.spectral_radius_ ||
                   (!alphas_given && scheme != Scheme::newmark &&
                    scheme != Scheme::quasi_static),
@@ -192,7 +200,7 @@ namespace ContactDynamics
                            format_number(defaults.spectral_radius_) + "."));
     if (scheme == Scheme::newmark || scheme == Scheme::quasi_static)
       {
-        AssertThrow(!alphas_given,
+        AssertThrow(alpha_m.empty() && alpha_f.empty(),
                     ExcMessage("Time integration/Alpha m = '" + alpha_m +
                                "' and Alpha f = '" + alpha_f +
                                "' apply to Scheme = generalized-alpha or "
@@ -243,11 +251,6 @@ namespace ContactDynamics
       }
     else
       {
-        AssertThrow(alpha_m.empty() == alpha_f.empty(),
-                    ExcMessage("Time integration/Alpha m = '" + alpha_m +
-                               "' and Alpha f = '" + alpha_f +
-                               "': give both (they replace the Spectral "
-                               "radius at infinity) or neither."));
         if (alpha_m.empty())
           {
             alpha_m_ = (2 * rho - 1) / (rho + 1);
