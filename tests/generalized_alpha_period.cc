@@ -66,10 +66,9 @@ int
 main()
 {
   initlog();
-  const double E = 200, rho = 3, L = 2;
-  const double omega = std::sqrt(3 * E / (rho * L * L));
+  const double L     = AxialMode::L;
+  const double omega = AxialMode::omega(), dt = AxialMode::dt();
   const double T     = 2 * M_PI / omega;
-  const double dt    = T / 20;
   const double U     = 0.002; // initial tip displacement
 
   const std::vector<Scheme> schemes{

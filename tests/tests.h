@@ -241,6 +241,22 @@ read_test_parameters(const std::string        &filename,
 // rho = 3, clamped on its left side and sliding on its right side, u_x =
 // 0.001 x at t = 0 (one free mode, omega^2 = 3 E / (rho L^2)), the entries
 // `time_integration` in its subsection, read into `prm`.
+namespace AxialMode
+{
+  constexpr double E = 200, rho = 3, L = 2;
+  // the mode's angular frequency and the step of 20 per period
+  inline double
+  omega()
+  {
+    return std::sqrt(3 * E / (rho * L * L));
+  }
+  inline double
+  dt()
+  {
+    return 2 * M_PI / omega() / 20;
+  }
+} // namespace AxialMode
+
 inline void
 read_axial_mode_parameters(const std::string        &time_integration,
                            dealii::ParameterHandler &prm)
