@@ -68,7 +68,6 @@ main()
   initlog();
   const double L     = AxialMode::L;
   const double omega = AxialMode::omega(), dt = AxialMode::dt();
-  const double T     = 2 * M_PI / omega;
   const double U     = 0.002; // initial tip displacement
 
   const std::vector<Scheme> schemes{
