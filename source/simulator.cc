@@ -24,9 +24,9 @@
 #include <array>
 #include <cmath>
 #include <csignal>
-#include <filesystem>
 #include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria.h>
+#include <filesystem>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -1733,7 +1733,7 @@ namespace ContactDynamics
                 good_since_cut = 0;
               }
             const unsigned int interval = output_parameters.checkpoint_interval;
-            const double       minutes  = output_parameters.checkpoint_wall_time;
+            const double       minutes = output_parameters.checkpoint_wall_time;
             // (the wall time of the first process decides for all)
             if ((interval > 0 && step % interval == 0) ||
                 (minutes > 0 &&

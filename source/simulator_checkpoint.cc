@@ -7,10 +7,10 @@
 #include <contact_dynamics/parameters.h>
 #include <contact_dynamics/simulator.h>
 
-#include <deal.II/distributed/solution_transfer.h>
-#include <deal.II/distributed/tria.h>
 #include <chrono>
 #include <cstdlib>
+#include <deal.II/distributed/solution_transfer.h>
+#include <deal.II/distributed/tria.h>
 #include <filesystem>
 #include <fstream>
 #include <thread>
@@ -66,8 +66,9 @@ namespace ContactDynamics
   std::vector<types::global_dof_index>
   Simulator<dim>::cell_order_of_dofs() const
   {
-    std::vector<types::global_dof_index> order, cell_dofs(fe->n_dofs_per_cell());
-    std::vector<bool>                    seen(dof_handler.n_dofs(), false);
+    std::vector<types::global_dof_index> order,
+      cell_dofs(fe->n_dofs_per_cell());
+    std::vector<bool> seen(dof_handler.n_dofs(), false);
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         cell->get_dof_indices(cell_dofs);
@@ -146,8 +147,8 @@ namespace ContactDynamics
         std::error_code   error;
         const auto        size = std::filesystem::file_size(file, error);
         sizes.push_back(root && !error ? double(size) : -1.);
-        hashes += (root && !error ? Checkpoints::tail_hash(file, size) : "") +
-                  "\n";
+        hashes +=
+          (root && !error ? Checkpoints::tail_hash(file, size) : "") + "\n";
       }
     data.set("output/file sizes", sizes);
     data.set_text("output/file hashes", hashes);
@@ -271,10 +272,10 @@ namespace ContactDynamics
                     (changed.size() == 1 ? " entry" : " entries") +
                     " that describe the model: " +
                     join(std::vector<std::string>(
-                             changed.begin(),
-                             changed.begin() +
-                               std::min<std::size_t>(changed.size(), 5)),
-                           "; ") +
+                           changed.begin(),
+                           changed.begin() +
+                             std::min<std::size_t>(changed.size(), 5)),
+                         "; ") +
                     ". A restart may change only " + join(changeable, ", ") +
                     " (restart without a parameter file to use the run's "
                     "own)."));
@@ -282,8 +283,8 @@ namespace ContactDynamics
                   ExcMessage("Time integration/End time = " +
                              format_number(integrator.end_time()) +
                              " is not beyond the time of the checkpoint '" +
-                             checkpoint + "', t = " +
-                             format_number(data.value("time")) +
+                             checkpoint +
+                             "', t = " + format_number(data.value("time")) +
                              ": nothing to continue (give a later End "
                              "time)."));
       AssertThrow(data.get("coarse mesh", 2) ==
@@ -308,22 +309,21 @@ namespace ContactDynamics
             output_parameters.directory + "/" + continued_files[k];
           std::error_code error;
           const double    size = std::filesystem::file_size(file, error);
-          AssertThrow(!error && size >= sizes[k] &&
-                        (hash.empty() ||
-                         Checkpoints::tail_hash(file, sizes[k]) == hash),
-                      ExcMessage(
-                        "Cannot continue '" + file + "' from the checkpoint '" +
-                        checkpoint + "': it " +
-                        (error ? std::string("does not exist") :
-                         size < sizes[k] ?
-                                 "has " + format_number(size) +
-                                   " bytes, the checkpoint needs its first " +
-                                   format_number(sizes[k]) :
-                                 std::string("is not the file the checkpoint "
-                                             "was written with (another run "
-                                             "wrote it since)")) +
-                        ". Restart in the output directory of the run that "
-                        "wrote the checkpoint."));
+          AssertThrow(
+            !error && size >= sizes[k] &&
+              (hash.empty() || Checkpoints::tail_hash(file, sizes[k]) == hash),
+            ExcMessage("Cannot continue '" + file + "' from the checkpoint '" +
+                       checkpoint + "': it " +
+                       (error ? std::string("does not exist") :
+                        size < sizes[k] ?
+                                "has " + format_number(size) +
+                                  " bytes, the checkpoint needs its first " +
+                                  format_number(sizes[k]) :
+                                std::string("is not the file the checkpoint "
+                                            "was written with (another run "
+                                            "wrote it since)")) +
+                       ". Restart in the output directory of the run that "
+                       "wrote the checkpoint."));
         }
     });
     restarting       = true;
@@ -350,11 +350,10 @@ namespace ContactDynamics
       // (first: a kill in between leaves files longer than the newest
       // checkpoint needs, which a restart accepts)
       std::error_code same;
-      if (std::filesystem::equivalent(std::filesystem::path(checkpoint)
-                                        .parent_path(),
-                                      output_parameters.directory +
-                                        "/checkpoints",
-                                      same))
+      if (std::filesystem::equivalent(
+            std::filesystem::path(checkpoint).parent_path(),
+            output_parameters.directory + "/checkpoints",
+            same))
         Checkpoints::remove_later(checkpoint);
       for (unsigned int k = 0; k < continued_files.size(); ++k)
         if (sizes[k] >= 0)
@@ -362,7 +361,9 @@ namespace ContactDynamics
                                          continued_files[k],
                                        sizes[k]);
       write_file_atomically(output_parameters.directory + "/parameters.prm",
-                            [&](std::ostream &out) { out << parameters_text; });
+                            [&](std::ostream &out) {
+                              out << parameters_text;
+                            });
     });
 
     open_output_files(true);
@@ -388,20 +389,19 @@ namespace ContactDynamics
   Simulator<dim>::load_checkpoint(const std::string    &checkpoint,
                                   const CheckpointData &data)
   {
-    const auto mismatch = [&](const std::string &what,
-                              const double       saved,
-                              const double       here) {
-      AssertThrow(saved == here,
-                  ExcCollective(
-                    "The checkpoint '" + checkpoint + "' has " +
-                    format_number(saved) + " " + what +
-                    ", the mesh of these parameters " + format_number(here) +
-                    ": restart with the parameters of the run that wrote "
-                    "it (its " +
-                    Checkpoints::parameter_file +
-                    "; only the End time, the outputs and the solver "
-                    "settings may change)."));
-    };
+    const auto mismatch =
+      [&](const std::string &what, const double saved, const double here) {
+        AssertThrow(saved == here,
+                    ExcCollective(
+                      "The checkpoint '" + checkpoint + "' has " +
+                      format_number(saved) + " " + what +
+                      ", the mesh of these parameters " + format_number(here) +
+                      ": restart with the parameters of the run that wrote "
+                      "it (its " +
+                      Checkpoints::parameter_file +
+                      "; only the End time, the outputs and the solver "
+                      "settings may change)."));
+      };
     auto *distributed =
       dynamic_cast<parallel::distributed::Triangulation<dim> *>(
         triangulation.get());
@@ -443,21 +443,21 @@ namespace ContactDynamics
     previous_active_nodes        = mesh[3];
     last_vtu_step                = mesh[4];
     // (8 values: written before the numerical dissipation was counted)
-    const auto &e                = data.get("energies", 0);
+    const auto &e = data.get("energies", 0);
     AssertThrow(e.size() == 8 || e.size() == 9,
                 ExcMessage("The checkpoint '" + checkpoint + "' has " +
                            std::to_string(e.size()) +
                            " energies where 8 or 9 are expected: it was "
                            "written by another version."));
-    energies.kinetic             = e[0];
-    energies.elastic             = e[1];
-    energies.dissipated          = e[2];
-    energies.external            = e[3];
-    energies.initial             = e[4];
-    energies.frictional          = e[5];
-    energies.obstacle            = e[6];
-    energies.transfer            = e[7];
-    energies.numerical           = e.size() > 8 ? e[8] : 0.;
+    energies.kinetic    = e[0];
+    energies.elastic    = e[1];
+    energies.dissipated = e[2];
+    energies.external   = e[3];
+    energies.initial    = e[4];
+    energies.frictional = e[5];
+    energies.obstacle   = e[6];
+    energies.transfer   = e[7];
+    energies.numerical  = e.size() > 8 ? e[8] : 0.;
     // a shorter Time step than the run's (the solver settings may change)
     dt_next = std::min(dt_next, integrator.time_step());
 
@@ -500,11 +500,11 @@ namespace ContactDynamics
 
 #define INSTANTIATE(dim)                                                   \
   template std::vector<VectorType *> Simulator<dim>::checkpoint_vectors(); \
-  template std::vector<types::global_dof_index>                           \
+  template std::vector<types::global_dof_index>                            \
                 Simulator<dim>::cell_order_of_dofs() const;                \
-  template void Simulator<dim>::write_checkpoint();                       \
-  template void Simulator<dim>::restart(const std::string &);             \
-  template void Simulator<dim>::load_checkpoint(const std::string &,      \
+  template void Simulator<dim>::write_checkpoint();                        \
+  template void Simulator<dim>::restart(const std::string &);              \
+  template void Simulator<dim>::load_checkpoint(const std::string &,       \
                                                 const CheckpointData &);
   INSTANTIATE(2)
   INSTANTIATE(3)

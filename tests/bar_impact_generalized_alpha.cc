@@ -97,8 +97,8 @@ namespace
     ParameterHandler prm2;
     read(scheme, prm2);
     ContactDynamics::Simulator<2> restarted(prm2, screen);
-    restarted.restart(ContactDynamics::Checkpoints::find(
-      "output_bar_" + scheme));
+    restarted.restart(
+      ContactDynamics::Checkpoints::find("output_bar_" + scheme));
     check_close("restarted at t = 1", restarted.current_time(), 1., 1e-9);
     while (restarted.current_time() < 3 - 1e-9)
       if (!restarted.advance(dt))

@@ -68,17 +68,32 @@ main()
   initlog();
   const double L     = AxialMode::L;
   const double omega = AxialMode::omega(), dt = AxialMode::dt();
-  const double U     = 0.002; // initial tip displacement
+  const double U = 0.002; // initial tip displacement
 
   const std::vector<Scheme> schemes{
-    {"generalized-alpha rho_inf = 0.8", "generalized-alpha", "0.8", "", "",
-     0.6 / 1.8, 0.8 / 1.8},
+    {"generalized-alpha rho_inf = 0.8",
+     "generalized-alpha",
+     "0.8",
+     "",
+     "",
+     0.6 / 1.8,
+     0.8 / 1.8},
     {"generalized-alpha rho_inf = 0", "generalized-alpha", "0", "", "", -1, 0},
-    {"generalized-alpha rho_inf = 1", "generalized-alpha", "1", "", "", 0.5,
+    {"generalized-alpha rho_inf = 1",
+     "generalized-alpha",
+     "1",
+     "",
+     "",
+     0.5,
      0.5},
     {"hht-alpha rho_inf = 0.8", "hht-alpha", "0.8", "", "", 0, 0.2 / 1.8},
-    {"generalized-alpha alpha_m = 0.1, alpha_f = 0.3", "generalized-alpha",
-     "", "0.1", "0.3", 0.1, 0.3}};
+    {"generalized-alpha alpha_m = 0.1, alpha_f = 0.3",
+     "generalized-alpha",
+     "",
+     "0.1",
+     "0.3",
+     0.1,
+     0.3}};
 
   for (const auto &s : schemes)
     {
@@ -97,12 +112,12 @@ main()
         vertex_dof(simulator.get_dof_handler(), dealii::Point<2>(L, 0), 0);
 
       // the recursion, from the consistent initial acceleration
-      const auto     A = amplification(omega * dt, s.am, s.af);
+      const auto             A = amplification(omega * dt, s.am, s.af);
       dealii::Vector<double> x(3), y(3);
-      x[0] = U;
-      x[2] = -omega * omega * U * dt * dt;
-      const double   E0 = simulator.energy().initial;
-      double         largest_difference = 0;
+      x[0]                                   = U;
+      x[2]                                   = -omega * omega * U * dt * dt;
+      const double        E0                 = simulator.energy().initial;
+      double              largest_difference = 0;
       std::vector<double> u{simulator.displacement()(tip)};
       for (unsigned int n = 0; n < 200; ++n)
         {
@@ -131,9 +146,9 @@ main()
           r1 += u[n + 1] * u[n];
           r2 += -u[n + 1] * u[n - 1];
         }
-      const double det = s11 * s22 - s12 * s12;
-      const double p = (r1 * s22 - r2 * s12) / det,
-                   q = (s11 * r2 - s12 * r1) / det;
+      const double det             = s11 * s22 - s12 * s12;
+      const double p               = (r1 * s22 - r2 * s12) / det,
+                   q               = (s11 * r2 - s12 * r1) / det;
       const double radius_measured = std::sqrt(q);
       const double theta_measured  = std::acos(p / (2 * radius_measured));
 
@@ -181,10 +196,10 @@ main()
 
       // the energy the recursion's motion lost (E ~ omega^2 u^2 + v^2) is
       // what the code reports as numerical dissipation
-      const auto  &energy    = simulator.energy();
-      const double predicted = 1 - (omega * omega * x[0] * x[0] +
-                                    x[1] * x[1] / (dt * dt)) /
-                                     (omega * omega * U * U);
+      const auto  &energy = simulator.energy();
+      const double predicted =
+        1 - (omega * omega * x[0] * x[0] + x[1] * x[1] / (dt * dt)) /
+              (omega * omega * U * U);
       check_close("numerical dissipation / E_0 vs the recursion's energy loss",
                   energy.numerical / E0,
                   predicted,

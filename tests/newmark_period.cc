@@ -20,7 +20,7 @@ main()
   initlog();
   const double L     = AxialMode::L;
   const double omega = AxialMode::omega(), dt = AxialMode::dt();
-  const double T     = 2 * M_PI / omega;
+  const double T = 2 * M_PI / omega;
 
   dealii::ParameterHandler prm;
   read_axial_mode_parameters("", prm);

@@ -428,9 +428,9 @@ namespace ContactDynamics
     IndexSet     displacement_dofs; // locally owned
     // the mean accelerations (v_{n+1} - v_n) / dt of the trial step and of
     // the step before (its length dt_before), if that was on this mesh
-    VectorType    mean_acceleration, mean_acceleration_before;
-    double        dt_before              = 0;
-    bool          have_mean_acceleration = false;
+    VectorType mean_acceleration, mean_acceleration_before;
+    double     dt_before              = 0;
+    bool       have_mean_acceleration = false;
     // the time-step controller of run(): the next dt, good steps since a
     // Newton failure (two kinds of counting)
     double       dt_next        = 0;
@@ -443,8 +443,8 @@ namespace ContactDynamics
     Timer         checkpoint_timer;
     bool          restarting        = false;
     unsigned int  linear_iterations = 0; // GMRES, last step
-    bool          structure_changed      = true;
-    int           last_vtu_step          = -1;
+    bool          structure_changed = true;
+    int           last_vtu_step     = -1;
     std::string   last_failure; // why the last failed step failed
     std::string   linear_solver_name;
     EnergyBalance energies;

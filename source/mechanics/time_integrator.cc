@@ -134,10 +134,10 @@ namespace ContactDynamics
   TimeIntegrator::parse_parameters(ParameterHandler &prm)
   {
     const TimeIntegrator defaults;
-    scheme             = scheme_names.value(prm.get("Scheme"));
-    beta_              = prm.get_double("Newmark beta");
-    gamma_             = prm.get_double("Newmark gamma");
-    spectral_radius_   = prm.get_double("Spectral radius at infinity");
+    scheme           = scheme_names.value(prm.get("Scheme"));
+    beta_            = prm.get_double("Newmark beta");
+    gamma_           = prm.get_double("Newmark gamma");
+    spectral_radius_ = prm.get_double("Spectral radius at infinity");
     parse_alphas(prm.get("Alpha m"), prm.get("Alpha f"), defaults);
     predictor          = predictor_names.value(prm.get("Predictor"));
     time_step_         = prm.get_double("Time step");
@@ -195,7 +195,8 @@ namespace ContactDynamics
                               std::string(" is replaced by the Alpha m and "
                                           "Alpha f given") :
                               " applies to Scheme = generalized-alpha or "
-                              "hht-alpha only, not to " + name) +
+                              "hht-alpha only, not to " +
+                                name) +
                            ": leave it at its default " +
                            format_number(defaults.spectral_radius_) + "."));
     if (scheme == Scheme::newmark || scheme == Scheme::quasi_static)
