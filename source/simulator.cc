@@ -1176,9 +1176,9 @@ namespace ContactDynamics
         set_trial_velocity_and_acceleration();
         if (balances_between_steps())
           {
-            // residual_full holds the balance between the steps; the
-            // reactions and the next step need M a_{n+1} + F_{n+1}
-            compute_effective_acceleration();
+            // residual_full holds the balance between the steps (of the
+            // last assembly, whose effective acceleration is still set);
+            // the reactions and the next step need M a_{n+1} + F_{n+1}
             residual_full.add(-integrator.old_force_factor(), force_old);
             VectorType inertia(residual_full);
             increment = a_new;

@@ -7,6 +7,7 @@
 #include <contact_dynamics/parameters.h>
 #include <contact_dynamics/simulator.h>
 
+#include <array>
 #include <chrono>
 #include <cstdlib>
 #include <deal.II/distributed/solution_transfer.h>
@@ -19,6 +20,22 @@ namespace ContactDynamics
 {
   namespace
   {
+    // the terms of the energy balance in the order of a checkpoint (a
+    // checkpoint of an older version ends before `numerical`)
+    std::array<double *, 9>
+    energy_terms(EnergyBalance &e)
+    {
+      return {{&e.kinetic,
+               &e.elastic,
+               &e.dissipated,
+               &e.external,
+               &e.initial,
+               &e.frictional,
+               &e.obstacle,
+               &e.transfer,
+               &e.numerical}};
+    }
+
     // the output files a restarted run continues
     const std::vector<std::string> continued_files{"statistics.csv",
                                                    "contact_history.csv"};
@@ -123,16 +140,10 @@ namespace ContactDynamics
               double(committed_active_nodes),
               double(previous_active_nodes),
               double(last_vtu_step)});
-    data.set("energies",
-             {energies.kinetic,
-              energies.elastic,
-              energies.dissipated,
-              energies.external,
-              energies.initial,
-              energies.frictional,
-              energies.obstacle,
-              energies.transfer,
-              energies.numerical});
+    std::vector<double> energy_values;
+    for (const double *e : energy_terms(energies))
+      energy_values.push_back(*e);
+    data.set("energies", energy_values);
     data.set("wall time", wall_time_before + wall_timer.wall_time());
     data.set("coarse mesh", coarse_mesh_signature(*triangulation));
     data.set_text("parameters", parameters_text);
@@ -449,15 +460,9 @@ namespace ContactDynamics
                            std::to_string(e.size()) +
                            " energies where 8 or 9 are expected: it was "
                            "written by another version."));
-    energies.kinetic    = e[0];
-    energies.elastic    = e[1];
-    energies.dissipated = e[2];
-    energies.external   = e[3];
-    energies.initial    = e[4];
-    energies.frictional = e[5];
-    energies.obstacle   = e[6];
-    energies.transfer   = e[7];
-    energies.numerical  = e.size() > 8 ? e[8] : 0.;
+    const auto terms = energy_terms(energies);
+    for (unsigned int i = 0; i < terms.size(); ++i)
+      *terms[i] = i < e.size() ? e[i] : 0.;
     // a shorter Time step than the run's (the solver settings may change)
     dt_next = std::min(dt_next, integrator.time_step());
 
