@@ -4,7 +4,8 @@ bitwise comparison before and after a change that must not change results
 (a restructuring, issue 38).
 
     regression_snapshot.py run SNAPSHOT [--steps N] [--exe PATH] [--match S]
-        run every prm/**/*.prm for N time steps (default 8): on one process
+        run every prm/**/*.prm for N time steps (default 8; fewer if the
+        file ends earlier; --skip-done keeps the cases SNAPSHOT has): on one process
         with a checkpoint every N/2 steps, and on two processes; then
         restart the one-process run from its step-N/2 checkpoint. Each run's
         statistics.csv (without its wall_time column), contact_history.csv
@@ -68,12 +69,18 @@ def execute(command, log, env_extra=None):
     return status
 
 
+def case_name(prm):
+    return str(prm.relative_to(ROOT / "prm")).replace("/", "_")[:-4]
+
+
 def run_file(prm, snapshot, exe, steps):
-    name = str(prm.relative_to(ROOT / "prm")).replace("/", "_")[:-4]
+    name = case_name(prm)
     values = read_prm(prm)
     dt = float(values.get("Time integration/Time step", "0.025"))
+    # never beyond the file's own end (a quasi-static load ends there)
+    end = min(steps * dt, float(values.get("Time integration/End time", "1")))
+    steps = max(1, round(end / dt))
     half = max(1, steps // 2)
-    end = steps * dt
     target = snapshot / name
     if target.exists():
         shutil.rmtree(target)
@@ -159,6 +166,8 @@ def main():
     parser.add_argument("--steps", type=int, default=8)
     parser.add_argument("--exe", default=str(ROOT / "build" / "contact-dynamics"))
     parser.add_argument("--match", default="")
+    parser.add_argument("--skip-done", action="store_true",
+                        help="keep the cases SNAPSHOT has already")
     args = parser.parse_args()
     dirs = [Path(d).resolve() for d in args.dirs]
     exe = Path(args.exe).resolve()
@@ -173,6 +182,8 @@ def main():
             print(f"{case.name}: restarted", flush=True)
         return 0
     for prm in shipped(args.match):
+        if args.skip_done and (dirs[0] / case_name(prm) / "mpirun2" / "exit_status").exists():
+            continue
         run_file(prm, dirs[0], exe, args.steps)
     return 0
 
