@@ -20,22 +20,6 @@ namespace ContactDynamics
 {
   namespace
   {
-    // the terms of the energy balance in the order of a checkpoint (a
-    // checkpoint of an older version ends before `numerical`)
-    std::array<double *, 9>
-    energy_terms(EnergyBalance &e)
-    {
-      return {{&e.kinetic,
-               &e.elastic,
-               &e.dissipated,
-               &e.external,
-               &e.initial,
-               &e.frictional,
-               &e.obstacle,
-               &e.transfer,
-               &e.numerical}};
-    }
-
     // the output files a restarted run continues
     const std::vector<std::string> continued_files{"statistics.csv",
                                                    "contact_history.csv"};
@@ -64,42 +48,107 @@ namespace ContactDynamics
       return {double(triangulation.n_cells(0)), sum};
     }
 
+
+    // a replicated mesh: every degree of freedom in the order of the cells
+    // (the same on any number of processes), for a checkpoint
+    template <int dim>
+    std::vector<types::global_dof_index>
+    cell_order_of_dofs(const DoFHandler<dim> &dof_handler)
+    {
+      std::vector<types::global_dof_index> order,
+        cell_dofs(dof_handler.get_fe().n_dofs_per_cell());
+      std::vector<bool> seen(dof_handler.n_dofs(), false);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          cell->get_dof_indices(cell_dofs);
+          for (const auto i : cell_dofs)
+            if (!seen[i])
+              {
+                seen[i] = true;
+                order.push_back(i);
+              }
+        }
+      AssertThrow(order.size() == dof_handler.n_dofs(),
+                  ExcInternalError("a degree of freedom on no cell"));
+      return order;
+    }
+
+    // the vectors of a checkpoint `data` (saved with the distributed mesh
+    // or in the order of the cells)
+    template <int dim>
+    void
+    load_vectors(const DoFHandler<dim>     &dof_handler,
+                 const CheckpointData      &data,
+                 std::vector<VectorType *> &vectors,
+                 const bool                 distributed)
+    {
+      if (distributed)
+        {
+          parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
+            dof_handler);
+          transfer.deserialize(vectors);
+        }
+      else
+        {
+          const auto order = cell_order_of_dofs(dof_handler);
+          for (unsigned int k = 0; k < vectors.size(); ++k)
+            {
+              const auto &values =
+                data.get("vector " + std::to_string(k), order.size());
+              for (std::size_t i = 0; i < order.size(); ++i)
+                if (dof_handler.locally_owned_dofs().is_element(order[i]))
+                  (*vectors[k])(order[i]) = values[i];
+              vectors[k]->compress(VectorOperation::insert);
+            }
+        }
+    }
+
+    // the continued output files cut to where the checkpoint `data` ends
+    // them, and the parameters of the continued run
+    void
+    continue_output_files(const MPI_Comm        mpi_communicator,
+                          const std::string    &directory,
+                          const std::string    &checkpoint,
+                          const CheckpointData &data,
+                          const std::string    &parameters_text)
+    {
+      // every check passed: rows written after the checkpoint (before the
+      // stop) go, and so do the checkpoints of that abandoned continuation
+      const auto &sizes = data.get("output/file sizes", continued_files.size());
+      check_collectively(mpi_communicator, [&]() {
+        if (!is_root(mpi_communicator))
+          return;
+        // (first: a kill in between leaves files longer than the newest
+        // checkpoint needs, which a restart accepts)
+        std::error_code same;
+        if (std::filesystem::equivalent(
+              std::filesystem::path(checkpoint).parent_path(),
+              directory + "/checkpoints",
+              same))
+          Checkpoints::remove_later(checkpoint);
+        for (unsigned int k = 0; k < continued_files.size(); ++k)
+          if (sizes[k] >= 0)
+            std::filesystem::resize_file(directory + "/" + continued_files[k],
+                                         sizes[k]);
+        write_file_atomically(directory + "/parameters.prm",
+                              [&](std::ostream &out) {
+                                out << parameters_text;
+                              });
+      });
+    }
   } // namespace
 
   template <int dim>
   std::vector<VectorType *>
   Simulator<dim>::checkpoint_vectors()
   {
-    std::vector<VectorType *> vectors{&u, &v, &a, &residual_full_old};
-    if (have_mean_acceleration)
-      vectors.push_back(&mean_acceleration_before);
+    std::vector<VectorType *> vectors = history.vectors();
     if (contact)
       for (VectorType *x : contact->history_vectors())
         vectors.push_back(x);
     return vectors;
   }
 
-  template <int dim>
-  std::vector<types::global_dof_index>
-  Simulator<dim>::cell_order_of_dofs() const
-  {
-    std::vector<types::global_dof_index> order,
-      cell_dofs(fe->n_dofs_per_cell());
-    std::vector<bool> seen(dof_handler.n_dofs(), false);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        cell->get_dof_indices(cell_dofs);
-        for (const auto i : cell_dofs)
-          if (!seen[i])
-            {
-              seen[i] = true;
-              order.push_back(i);
-            }
-      }
-    AssertThrow(order.size() == dof_handler.n_dofs(),
-                ExcInternalError("a degree of freedom on no cell"));
-    return order;
-  }
 
   template <int dim>
   void
@@ -116,104 +165,8 @@ namespace ContactDynamics
     });
 
     CheckpointData data;
-    data.set("processes", Utilities::MPI::n_mpi_processes(mpi_communicator));
-    data.set("dimension", dim);
-    data.set("cells", triangulation->n_global_active_cells());
-    data.set("unknowns", dof_handler.n_dofs());
-    data.set("time", time);
-    data.set("step", step);
-    data.set("controller",
-             {dt_current,
-              dt_next,
-              double(good_since_cut),
-              double(cut_since),
-              double(time_step_cuts),
-              double(cumulative_newton_iterations),
-              double(rejected_steps),
-              error_estimate,
-              step_factor,
-              dt_before,
-              double(have_mean_acceleration)});
-    data.set("mesh",
-             {double(mesh_changes),
-              double(cell_limit_reported),
-              double(committed_active_nodes),
-              double(previous_active_nodes),
-              double(last_vtu_step)});
-    std::vector<double> energy_values;
-    for (const double *e : energy_terms(energies))
-      energy_values.push_back(*e);
-    data.set("energies", energy_values);
-    data.set("wall time", wall_time_before + wall_timer.wall_time());
-    data.set("coarse mesh", coarse_mesh_signature(*triangulation));
-    data.set_text("parameters", parameters_text);
-    data.set_text("statistics columns", join(statistics_columns(), ","));
-    // where the continued files end (their rows are flushed as written),
-    // and what they end with
-    std::vector<double> sizes;
-    std::string         hashes;
-    for (const auto &name : continued_files)
-      {
-        const std::string file = output_parameters.directory + "/" + name;
-        std::error_code   error;
-        const auto        size = std::filesystem::file_size(file, error);
-        sizes.push_back(root && !error ? double(size) : -1.);
-        hashes +=
-          (root && !error ? Checkpoints::tail_hash(file, size) : "") + "\n";
-      }
-    data.set("output/file sizes", sizes);
-    data.set_text("output/file hashes", hashes);
-    {
-      std::vector<double> times;
-      std::string         names;
-      for (const auto &[t, name] : solution_writer->listed())
-        {
-          times.push_back(t);
-          names += name + "\n";
-        }
-      data.set("output/pvd times", times);
-      data.set_text("output/pvd files", names);
-    }
-    if (contact)
-      contact->save_history(data);
-
-    // the vectors: with the distributed mesh (its refinement and
-    // partition) or in the order of the cells of the replicated one
-    const std::vector<VectorType *> vectors = checkpoint_vectors();
-    data.set("vectors", vectors.size());
-    auto *distributed =
-      dynamic_cast<parallel::distributed::Triangulation<dim> *>(
-        triangulation.get());
-    if (distributed != nullptr)
-      {
-        std::vector<VectorType>         ghosts(vectors.size());
-        std::vector<const VectorType *> pointers;
-        for (unsigned int k = 0; k < vectors.size(); ++k)
-          pointers.push_back(&ghosted(*vectors[k], ghosts[k]));
-        parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
-          dof_handler);
-        transfer.prepare_for_serialization(pointers);
-        check_collectively(mpi_communicator, [&]() {
-          distributed->save(temporary + "/" + Checkpoints::mesh_file);
-        });
-      }
-    else
-      {
-        const auto order = cell_order_of_dofs();
-        VectorType all(locally_owned,
-                       complete_index_set(dof_handler.n_dofs()),
-                       mpi_communicator);
-        for (unsigned int k = 0; k < vectors.size(); ++k)
-          {
-            all = *vectors[k];
-            if (!root)
-              continue;
-            std::vector<double> values(order.size());
-            for (std::size_t i = 0; i < order.size(); ++i)
-              values[i] = all(order[i]);
-            data.set("vector " + std::to_string(k), values);
-          }
-      }
+    save_run(data);
+    const bool distributed = save_vectors(data, temporary);
     // for the test of a kill during a write (tests/CMakeLists.txt)
     if (const char *pause = std::getenv("CONTACT_DYNAMICS_CHECKPOINT_PAUSE"))
       {
@@ -246,7 +199,7 @@ namespace ContactDynamics
     // and on a distributed mesh with the cells in the order a load gives
     // them (refinement and coarsening leave another order, and the sums
     // of the assembly follow it): this run continues from the checkpoint
-    if (distributed != nullptr)
+    if (distributed)
       {
         CheckpointData saved;
         check_collectively(mpi_communicator, [&]() {
@@ -260,82 +213,112 @@ namespace ContactDynamics
 
   template <int dim>
   void
+  Simulator<dim>::save_run(CheckpointData &data)
+  {
+    const bool root = is_root(mpi_communicator);
+    data.set("processes", Utilities::MPI::n_mpi_processes(mpi_communicator));
+    data.set("dimension", dim);
+    data.set("cells", triangulation->n_global_active_cells());
+    data.set("unknowns", dof_handler.n_dofs());
+    data.set("time", time);
+    data.set("step", step);
+    // the controller, the energies
+    history.save(data, RunContext());
+    data.set("mesh",
+             {double(mesh_changes),
+              double(cell_limit_reported),
+              double(committed_active_nodes),
+              double(previous_active_nodes),
+              double(last_vtu_step)});
+    data.set("wall time", wall_time_before + wall_timer.wall_time());
+    data.set("coarse mesh", coarse_mesh_signature(*triangulation));
+    data.set_text("parameters", parameters_text);
+    data.set_text("statistics columns", join(statistics_columns(), ","));
+    // where the continued files end (their rows are flushed as written),
+    // and what they end with
+    std::vector<double> sizes;
+    std::string         hashes;
+    for (const auto &name : continued_files)
+      {
+        const std::string file = output_parameters.directory + "/" + name;
+        std::error_code   error;
+        const auto        size = std::filesystem::file_size(file, error);
+        sizes.push_back(root && !error ? double(size) : -1.);
+        hashes +=
+          (root && !error ? Checkpoints::tail_hash(file, size) : "") + "\n";
+      }
+    data.set("output/file sizes", sizes);
+    data.set_text("output/file hashes", hashes);
+    {
+      std::vector<double> times;
+      std::string         names;
+      for (const auto &[t, name] : solution_writer->listed())
+        {
+          times.push_back(t);
+          names += name + "\n";
+        }
+      data.set("output/pvd times", times);
+      data.set_text("output/pvd files", names);
+    }
+    if (contact)
+      contact->save_history(data);
+  }
+
+  template <int dim>
+  bool
+  Simulator<dim>::save_vectors(CheckpointData    &data,
+                               const std::string &temporary)
+  {
+    // the vectors: with the distributed mesh (its refinement and
+    // partition) or in the order of the cells of the replicated one
+    const bool                      root    = is_root(mpi_communicator);
+    const std::vector<VectorType *> vectors = checkpoint_vectors();
+    data.set("vectors", vectors.size());
+    auto *distributed =
+      dynamic_cast<parallel::distributed::Triangulation<dim> *>(
+        triangulation.get());
+    if (distributed != nullptr)
+      {
+        std::vector<VectorType>         ghosts(vectors.size());
+        std::vector<const VectorType *> pointers;
+        for (unsigned int k = 0; k < vectors.size(); ++k)
+          pointers.push_back(&ghosted(*vectors[k], ghosts[k]));
+        parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
+          dof_handler);
+        transfer.prepare_for_serialization(pointers);
+        check_collectively(mpi_communicator, [&]() {
+          distributed->save(temporary + "/" + Checkpoints::mesh_file);
+        });
+      }
+    else
+      {
+        const auto order = cell_order_of_dofs(dof_handler);
+        VectorType all(locally_owned,
+                       complete_index_set(dof_handler.n_dofs()),
+                       mpi_communicator);
+        for (unsigned int k = 0; k < vectors.size(); ++k)
+          {
+            all = *vectors[k];
+            if (!root)
+              continue;
+            std::vector<double> values(order.size());
+            for (std::size_t i = 0; i < order.size(); ++i)
+              values[i] = all(order[i]);
+            data.set("vector " + std::to_string(k), values);
+          }
+      }
+    return distributed != nullptr;
+  }
+
+  template <int dim>
+  void
   Simulator<dim>::restart(const std::string &checkpoint)
   {
     wall_timer.restart();
     CheckpointData data;
     // everything is checked before any file is touched
     check_collectively(mpi_communicator, [&]() {
-      data.read(checkpoint + "/" + Checkpoints::data_file);
-      AssertThrow(data.value("dimension") == dim,
-                  ExcMessage("The checkpoint '" + checkpoint + "' is " +
-                             format_number(data.value("dimension")) +
-                             "-dimensional, the parameters are " +
-                             std::to_string(dim) + "-dimensional."));
-      const auto changed = Checkpoints::changed_entries(data.text("parameters"),
-                                                        parameters_text,
-                                                        changeable);
-      AssertThrow(changed.empty(),
-                  ExcMessage(
-                    "The parameters differ from those of the run that wrote "
-                    "the checkpoint '" +
-                    checkpoint + "' in " + std::to_string(changed.size()) +
-                    (changed.size() == 1 ? " entry" : " entries") +
-                    " that describe the model: " +
-                    join(std::vector<std::string>(
-                           changed.begin(),
-                           changed.begin() +
-                             std::min<std::size_t>(changed.size(), 5)),
-                         "; ") +
-                    ". A restart may change only " + join(changeable, ", ") +
-                    " (restart without a parameter file to use the run's "
-                    "own)."));
-      AssertThrow(integrator.end_time() > data.value("time"),
-                  ExcMessage("Time integration/End time = " +
-                             format_number(integrator.end_time()) +
-                             " is not beyond the time of the checkpoint '" +
-                             checkpoint +
-                             "', t = " + format_number(data.value("time")) +
-                             ": nothing to continue (give a later End "
-                             "time)."));
-      AssertThrow(data.get("coarse mesh", 2) ==
-                    coarse_mesh_signature(*triangulation),
-                  ExcMessage("The checkpoint '" + checkpoint +
-                             "' was written on another coarse mesh than "
-                             "these parameters build (a changed mesh "
-                             "file?)."));
-      // the continued files must be those the checkpoint was written
-      // with (rows written after it, before the stop, are cut below)
-      if (!is_root(mpi_communicator))
-        return;
-      const auto &sizes = data.get("output/file sizes", continued_files.size());
-      std::istringstream hashes(data.text("output/file hashes"));
-      for (unsigned int k = 0; k < continued_files.size(); ++k)
-        {
-          std::string hash;
-          std::getline(hashes, hash);
-          if (sizes[k] < 0)
-            continue;
-          const std::string file =
-            output_parameters.directory + "/" + continued_files[k];
-          std::error_code error;
-          const double    size = std::filesystem::file_size(file, error);
-          AssertThrow(
-            !error && size >= sizes[k] &&
-              (hash.empty() || Checkpoints::tail_hash(file, sizes[k]) == hash),
-            ExcMessage("Cannot continue '" + file + "' from the checkpoint '" +
-                       checkpoint + "': it " +
-                       (error ? std::string("does not exist") :
-                        size < sizes[k] ?
-                                "has " + format_number(size) +
-                                  " bytes, the checkpoint needs its first " +
-                                  format_number(sizes[k]) :
-                                std::string("is not the file the checkpoint "
-                                            "was written with (another run "
-                                            "wrote it since)")) +
-                       ". Restart in the output directory of the run that "
-                       "wrote the checkpoint."));
-        }
+      check_checkpoint(checkpoint, data);
     });
     restarting       = true;
     wall_time_before = data.value("wall time");
@@ -352,31 +335,11 @@ namespace ContactDynamics
                              "(Error tolerance switched on or off?)."));
     });
 
-    // every check passed: rows written after the checkpoint (before the
-    // stop) go, and so do the checkpoints of that abandoned continuation
-    const auto &sizes = data.get("output/file sizes", continued_files.size());
-    check_collectively(mpi_communicator, [&]() {
-      if (!is_root(mpi_communicator))
-        return;
-      // (first: a kill in between leaves files longer than the newest
-      // checkpoint needs, which a restart accepts)
-      std::error_code same;
-      if (std::filesystem::equivalent(
-            std::filesystem::path(checkpoint).parent_path(),
-            output_parameters.directory + "/checkpoints",
-            same))
-        Checkpoints::remove_later(checkpoint);
-      for (unsigned int k = 0; k < continued_files.size(); ++k)
-        if (sizes[k] >= 0)
-          std::filesystem::resize_file(output_parameters.directory + "/" +
-                                         continued_files[k],
-                                       sizes[k]);
-      write_file_atomically(output_parameters.directory + "/parameters.prm",
-                            [&](std::ostream &out) {
-                              out << parameters_text;
-                            });
-    });
-
+    continue_output_files(mpi_communicator,
+                          output_parameters.directory,
+                          checkpoint,
+                          data,
+                          parameters_text);
     open_output_files(true);
     {
       const auto &times = data.get("output/pvd times");
@@ -433,64 +396,23 @@ namespace ContactDynamics
              data.value("cells"),
              triangulation->n_global_active_cells());
 
-    time                         = data.value("time");
-    step                         = data.value("step");
-    const auto &controller       = data.get("controller", 11);
-    dt_current                   = controller[0];
-    dt_next                      = controller[1];
-    good_since_cut               = controller[2];
-    cut_since                    = controller[3];
-    time_step_cuts               = controller[4];
-    cumulative_newton_iterations = controller[5];
-    rejected_steps               = controller[6];
-    error_estimate               = controller[7];
-    step_factor                  = controller[8];
-    dt_before                    = controller[9];
-    have_mean_acceleration       = controller[10] != 0;
-    const auto &mesh             = data.get("mesh", 5);
-    mesh_changes                 = mesh[0];
-    cell_limit_reported          = mesh[1] != 0;
-    committed_active_nodes       = mesh[2];
-    previous_active_nodes        = mesh[3];
-    last_vtu_step                = mesh[4];
-    // (8 values: written before the numerical dissipation was counted)
-    const auto &e = data.get("energies", 0);
-    AssertThrow(e.size() == 8 || e.size() == 9,
-                ExcMessage("The checkpoint '" + checkpoint + "' has " +
-                           std::to_string(e.size()) +
-                           " energies where 8 or 9 are expected: it was "
-                           "written by another version."));
-    const auto terms = energy_terms(energies);
-    for (unsigned int i = 0; i < terms.size(); ++i)
-      *terms[i] = i < e.size() ? e[i] : 0.;
-    // a shorter Time step than the run's (the solver settings may change)
-    dt_next = std::min(dt_next, integrator.time_step());
+    time                   = data.value("time");
+    step                   = data.value("step");
+    const auto &mesh       = data.get("mesh", 5);
+    mesh_changes           = mesh[0];
+    cell_limit_reported    = mesh[1] != 0;
+    committed_active_nodes = mesh[2];
+    previous_active_nodes  = mesh[3];
+    last_vtu_step          = mesh[4];
+    // the controller, the energies
+    history.load(data, RunContext{checkpoint});
 
     setup_system();
     mismatch("unknowns", data.value("unknowns"), dof_handler.n_dofs());
-    if (have_mean_acceleration)
-      mean_acceleration_before.reinit(v);
+    history.reinit_vectors(v);
     std::vector<VectorType *> vectors = checkpoint_vectors();
     mismatch("saved vectors", data.value("vectors"), vectors.size());
-    if (distributed != nullptr)
-      {
-        parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
-          dof_handler);
-        transfer.deserialize(vectors);
-      }
-    else
-      {
-        const auto order = cell_order_of_dofs();
-        for (unsigned int k = 0; k < vectors.size(); ++k)
-          {
-            const auto &values =
-              data.get("vector " + std::to_string(k), order.size());
-            for (std::size_t i = 0; i < order.size(); ++i)
-              if (locally_owned.is_element(order[i]))
-                (*vectors[k])(order[i]) = values[i];
-            vectors[k]->compress(VectorOperation::insert);
-          }
-      }
+    load_vectors(dof_handler, data, vectors, distributed != nullptr);
     ghosted(u, u_ghost);
     ghosted(v, v_ghost);
     if (contact)
@@ -503,14 +425,96 @@ namespace ContactDynamics
     checkpoint_timer.restart();
   }
 
+  template <int dim>
+  void
+  Simulator<dim>::check_checkpoint(const std::string &checkpoint,
+                                   CheckpointData    &data) const
+  {
+    data.read(checkpoint + "/" + Checkpoints::data_file);
+    AssertThrow(data.value("dimension") == dim,
+                ExcMessage("The checkpoint '" + checkpoint + "' is " +
+                           format_number(data.value("dimension")) +
+                           "-dimensional, the parameters are " +
+                           std::to_string(dim) + "-dimensional."));
+    const auto changed = Checkpoints::changed_entries(data.text("parameters"),
+                                                      parameters_text,
+                                                      changeable);
+    AssertThrow(changed.empty(),
+                ExcMessage(
+                  "The parameters differ from those of the run that wrote "
+                  "the checkpoint '" +
+                  checkpoint + "' in " + std::to_string(changed.size()) +
+                  (changed.size() == 1 ? " entry" : " entries") +
+                  " that describe the model: " +
+                  join(std::vector<std::string>(
+                         changed.begin(),
+                         changed.begin() +
+                           std::min<std::size_t>(changed.size(), 5)),
+                       "; ") +
+                  ". A restart may change only " + join(changeable, ", ") +
+                  " (restart without a parameter file to use the run's "
+                  "own)."));
+    AssertThrow(integrator.end_time() > data.value("time"),
+                ExcMessage("Time integration/End time = " +
+                           format_number(integrator.end_time()) +
+                           " is not beyond the time of the checkpoint '" +
+                           checkpoint +
+                           "', t = " + format_number(data.value("time")) +
+                           ": nothing to continue (give a later End "
+                           "time)."));
+    AssertThrow(data.get("coarse mesh", 2) ==
+                  coarse_mesh_signature(*triangulation),
+                ExcMessage("The checkpoint '" + checkpoint +
+                           "' was written on another coarse mesh than "
+                           "these parameters build (a changed mesh "
+                           "file?)."));
+    // the continued files must be those the checkpoint was written
+    // with (rows written after it, before the stop, are cut below)
+    if (!is_root(mpi_communicator))
+      return;
+    const auto &sizes = data.get("output/file sizes", continued_files.size());
+    std::istringstream hashes(data.text("output/file hashes"));
+    for (unsigned int k = 0; k < continued_files.size(); ++k)
+      {
+        std::string hash;
+        std::getline(hashes, hash);
+        if (sizes[k] < 0)
+          continue;
+        const std::string file =
+          output_parameters.directory + "/" + continued_files[k];
+        std::error_code error;
+        const double    size = std::filesystem::file_size(file, error);
+        AssertThrow(
+          !error && size >= sizes[k] &&
+            (hash.empty() || Checkpoints::tail_hash(file, sizes[k]) == hash),
+          ExcMessage("Cannot continue '" + file + "' from the checkpoint '" +
+                     checkpoint + "': it " +
+                     (error ? std::string("does not exist") :
+                      size < sizes[k] ?
+                              "has " + format_number(size) +
+                                " bytes, the checkpoint needs its first " +
+                                format_number(sizes[k]) :
+                              std::string("is not the file the checkpoint "
+                                          "was written with (another run "
+                                          "wrote it since)")) +
+                     ". Restart in the output directory of the run that "
+                     "wrote the checkpoint."));
+      }
+  }
+
+
+
 #define INSTANTIATE(dim)                                                   \
   template std::vector<VectorType *> Simulator<dim>::checkpoint_vectors(); \
-  template std::vector<types::global_dof_index>                            \
-                Simulator<dim>::cell_order_of_dofs() const;                \
-  template void Simulator<dim>::write_checkpoint();                        \
+  template void                      Simulator<dim>::write_checkpoint();   \
   template void Simulator<dim>::restart(const std::string &);              \
   template void Simulator<dim>::load_checkpoint(const std::string &,       \
-                                                const CheckpointData &);
+                                                const CheckpointData &);   \
+  template void Simulator<dim>::save_run(CheckpointData &);                \
+  template bool Simulator<dim>::save_vectors(CheckpointData &,             \
+                                             const std::string &);         \
+  template void Simulator<dim>::check_checkpoint(const std::string &,      \
+                                                 CheckpointData &) const;
   INSTANTIATE(2)
   INSTANTIATE(3)
 #undef INSTANTIATE

@@ -65,6 +65,15 @@ namespace ContactDynamics
     virtual void
     list_vectors(std::vector<TrilinosWrappers::MPI::Vector *> &)
     {}
+
+    /**
+     * Before a checkpoint's vectors are read into those of list_vectors()
+     * (after load() and the setup of the loaded mesh): the owner's own
+     * vectors take the layout of `layout`.
+     */
+    virtual void
+    reinit_vectors(const TrilinosWrappers::MPI::Vector & /*layout*/)
+    {}
   };
 
   /** The owners of one holder, called in the order of registration. */
@@ -112,6 +121,13 @@ namespace ContactDynamics
     {
       for (auto *owner : owners)
         owner->transfer(context);
+    }
+
+    void
+    reinit_vectors(const TrilinosWrappers::MPI::Vector &layout) const
+    {
+      for (auto *owner : owners)
+        owner->reinit_vectors(layout);
     }
 
     std::vector<TrilinosWrappers::MPI::Vector *>

@@ -15,9 +15,12 @@
 
 #include <contact_dynamics/contact/contact_formulation.h>
 #include <contact_dynamics/mechanics/bodies.h>
+#include <contact_dynamics/mechanics/body_state.h>
 #include <contact_dynamics/mechanics/boundary_conditions.h>
+#include <contact_dynamics/mechanics/energy_account.h>
 #include <contact_dynamics/mechanics/solid_mechanics.h>
 #include <contact_dynamics/mechanics/time_integrator.h>
+#include <contact_dynamics/mechanics/time_step_controller.h>
 #include <contact_dynamics/mesh/contact_refinement.h>
 #include <contact_dynamics/output/contact_writer.h>
 #include <contact_dynamics/output/postprocessing.h>
@@ -36,28 +39,6 @@ namespace ContactDynamics
 {
   using namespace dealii;
 
-  /** Energies of the discrete system; see doc/theory.md. */
-  struct EnergyBalance
-  {
-    double kinetic    = 0;
-    double elastic    = 0;
-    double dissipated = 0; // time integral of v.C v
-    double external   = 0; // work of reactions and body forces
-    double initial    = 0; // kinetic + elastic at t = 0
-    double frictional = 0; // dissipated by contact friction
-    double obstacle   = 0; // work of moving rigid obstacles on the bodies
-    double transfer   = 0; // energy change of the mesh transfers
-    // removed by the time integrator from the bulk (dissipative schemes)
-    double numerical = 0;
-
-    double
-    error() const
-    {
-      return kinetic + elastic + dissipated + frictional + numerical -
-             external - obstacle - transfer - initial;
-    }
-  };
-
   template <int dim>
   class Simulator : private NonlinearSystem
   {
@@ -66,143 +47,128 @@ namespace ContactDynamics
     static void
     declare_parameters(ParameterHandler &prm, const SceneLayout &layout);
 
-    /**
-     * Reads and checks all parameters (throws ExcMessage on bad input) and
+    /** Reads and checks all parameters (throws ExcMessage on bad input) and
      * builds the mesh; `screen` receives the progress output (from the
-     * first process of `comm` only).
-     */
+     * first process of `comm` only). */
     Simulator(ParameterHandler &prm,
               std::ostream     &screen,
               const MPI_Comm    comm = MPI_COMM_WORLD);
 
-    /**
-     * Runs to the end time; throws if a step cannot be completed. With
+    /** Runs to the end time; throws if a step cannot be completed. With
      * `checkpoint` (a checkpoint directory, Checkpoints::find()), continues
-     * the run that wrote it instead of starting at t = 0.
-     */
+     * the run that wrote it instead of starting at t = 0. */
     void
     run(const std::string &checkpoint = "");
 
+    /** The energies, time and number of the last completed step. */
     const EnergyBalance &
-    energy() const
-    {
-      return energies;
-    }
-
+    energy() const;
     double
-    current_time() const
-    {
-      return time;
-    }
-
+    current_time() const;
     unsigned int
-    n_steps() const
-    {
-      return step;
-    }
+    n_steps() const;
 
+    /** The degrees of freedom, the committed displacement and velocity. */
     const DoFHandler<dim> &
-    get_dof_handler() const
-    {
-      return dof_handler;
-    }
+    get_dof_handler() const;
+    const VectorType &
+    displacement() const;
+    const VectorType &
+    velocity() const;
 
-    /**
-     * Total reaction force on the Dirichlet degrees of freedom of a named
-     * surface at the current time (force exerted by the support).
-     */
+    /** Total reaction force on the Dirichlet degrees of freedom of a named
+     * surface at the current time (force exerted by the support). */
     Tensor<1, dim>
     reaction_force(const std::string &surface) const;
 
-    /**
-     * Constraints of the Newton increments: Dirichlet, unused multipliers
-     * (homogeneous) and hanging nodes (those of all contact surface nodes).
-     */
+    /** Constraints of the Newton increments: Dirichlet, unused multipliers
+     * (homogeneous) and hanging nodes (those of all contact surface nodes). */
     const AffineConstraints<double> &
-    get_constraints() const
-    {
-      return increment_constraints;
-    }
+    get_constraints() const;
 
     /** The contact formulation, or nullptr without contact. */
     const ContactFormulation<dim> *
-    get_contact() const
-    {
-      return contact.get();
-    }
-
-    const VectorType &
-    displacement() const
-    {
-      return u;
-    }
-
-    const VectorType &
-    velocity() const
-    {
-      return v;
-    }
+    get_contact() const;
 
     /** The mesh (for tests that set refinement flags). */
     parallel::TriangulationBase<dim> &
-    get_triangulation()
-    {
-      return *triangulation;
-    }
+    get_triangulation();
 
-    /**
-     * Refines and coarsens the distributed mesh as its cells are flagged
-     * and transfers the state to the new mesh: displacement, velocity and
-     * acceleration (and the trial state of the step, with its multipliers)
-     * by interpolation; the contact history is evaluated again at the
-     * committed state. The energy change is added to energy().transfer.
-     * False (nothing done) if no cell is flagged after the mesh's own
-     * rules. Collective.
-     */
+    /** Refines and coarsens the distributed mesh as its cells are flagged;
+     * the committed and the trial state move by interpolation, the contact
+     * history is evaluated again (energy change: energy().transfer). False
+     * (nothing done) if no cell is flagged. Collective. */
     bool
     refine_and_transfer();
 
     /** The number of mesh changes so far. */
     unsigned int
-    n_mesh_changes() const
-    {
-      return mesh_changes;
-    }
+    n_mesh_changes() const;
 
     /** Sets up the unknowns and the initial state (called by run()). */
     void
     initialize();
 
-    /**
-     * Instead of initialize(): the mesh, state, history and output
-     * positions of a checkpoint directory (written by write_checkpoint()
-     * with the same model parameters, on any number of processes).
-     */
+    /** Instead of initialize(): continues from a checkpoint directory
+     * (write_checkpoint(), the same model, any number of processes). */
     void
     restart(const std::string &checkpoint);
 
-    /**
-     * Writes a checkpoint of the last completed step to Output
-     * directory/checkpoints (collective; see Checkpoints) and keeps the
-     * last two.
-     */
+    /** A checkpoint of the last completed step in Output
+     * directory/checkpoints (collective; Checkpoints); keeps the last two. */
     void
     write_checkpoint();
 
-    /** One time step of size dt; false (state unchanged) if it failed. */
+    /** One time step of size dt; false (state unchanged) if it failed:
+     * predict(), solve(), evaluate(), then reject() or commit(). */
     bool
     advance(const double dt);
 
-    /**
-     * For tests of the Jacobian: the residual of the current time step at
-     * the displacement `trial` with time step dt, and the Jacobian there.
-     */
+    /** For tests of the Jacobian: the residual of the current time step at
+     * the displacement `trial` with time step dt, and the Jacobian there. */
     const MatrixType &
     residual_and_jacobian(const VectorType &trial,
                           const double      dt,
                           VectorType       &residual);
 
   private:
+    /** The Newton solve of a step, over the meshes it was solved on. */
+    struct SolveResult
+    {
+      NewtonSolver::Result newton;
+      bool                 adapted = false; // on a mesh adapted to it
+    };
+
+    /** The trial state at t_new from the committed one. */
+    void
+    predict(const double t_new);
+    /** Newton, and again on a mesh adapted to the step's contact. */
+    SolveResult
+    solve(const double t_new);
+    /** Energies, checks of the converged state, the error estimate. */
+    StepVerdict
+    evaluate(const NewtonSolver::Result &result);
+    /** The bulk forces M a_{n+1} + F_{n+1} of a balanced scheme. */
+    void
+    complete_balanced_forces();
+    /** A failed or rejected step: the state stays, the screen says why. */
+    void
+    reject(const StepVerdict &verdict,
+           const SolveResult &solved,
+           const double       t_new);
+    /** The trial state becomes the committed one (every owner). */
+    void
+    commit(const NewtonSolver::Result &result, const double t_new);
+    /** run(): a signal stops the run between steps, with a checkpoint. */
+    void
+    stop_on_signal();
+    /** run(): after an accepted step, the mesh, dt and checkpoint. */
+    void
+    after_accepted_step(const double dt_try);
+    /** run(): after a failed or rejected step, the next dt. */
+    void
+    after_failed_step(const double dt_try);
+
     // NonlinearSystem
     void
     assemble(const bool  with_jacobian,
@@ -212,18 +178,12 @@ namespace ContactDynamics
     apply_update(const VectorType &increment) override;
 
     bool
-    has_multipliers() const override
-    {
-      return contact != nullptr;
-    }
+    has_multipliers() const override;
     std::vector<MultiplierGroup>
     multiplier_groups() const override;
 
     double
-    iterate_norm() const override
-    {
-      return u_new.l2_norm();
-    }
+    iterate_norm() const override;
     bool
     jacobian_is_constant() const override;
 
@@ -242,10 +202,7 @@ namespace ContactDynamics
     assemble_committed_reactions();
     /** Whether the scheme balances the forces between the steps. */
     bool
-    balances_between_steps() const
-    {
-      return integrator.alpha_m() != 0 || integrator.alpha_f() != 0;
-    }
+    balances_between_steps() const;
     /** force_old from residual_full_old and a. */
     void
     compute_old_forces();
@@ -258,6 +215,15 @@ namespace ContactDynamics
     reevaluate_committed_state();
     void
     setup_sparsity();
+    /** The triangulation of the scene (constructor). */
+    void
+    create_mesh();
+    /** The rigid-body modes of each body, for an algebraic multigrid. */
+    void
+    set_near_null_space();
+    /** The constraints of the increments, and which dofs are held. */
+    void
+    setup_constraints();
     /** u and v at t = 0 from the bodies' initial conditions. */
     void
     interpolate_initial_state();
@@ -272,21 +238,22 @@ namespace ContactDynamics
       const double                                     h) const;
     void
     apply_initial_conditions();
+    /** a at t = 0 from M a = f_body - C v - f_int(u) (Dirichlet: given). */
+    void
+    solve_initial_acceleration(
+      const std::map<types::global_dof_index, double> &a_dirichlet);
+    /** Throws if the initial state overflowed. */
+    void
+    check_initial_state() const;
+    /** The gaps at t = 0: overlapping bodies stop the run. */
+    void
+    check_initial_contact();
     void
     set_trial_velocity_and_acceleration();
-    /**
-     * Stabilization 'velocity update': after a converged step, one factor
-     * on the free velocities of the bodies the contact acted on returns the
-     * step's normal contact work to kinetic energy; returns the kinetic
-     * energy change.
-     */
+    /** The stabilization 'velocity update' of a converged step (contact/
+     * velocity_update.h); returns the kinetic energy change. */
     double
     apply_velocity_update();
-    /** The local error estimate of the trial step (Time
-     * integration/Error tolerance): the largest over the free displacement
-     * unknowns. Collective. */
-    double
-    local_error_estimate();
     void
     write_solution();
     /** The columns of statistics.csv. */
@@ -302,13 +269,18 @@ namespace ContactDynamics
      * `checkpoint`); the output files are left as they are. */
     void
     load_checkpoint(const std::string &checkpoint, const CheckpointData &data);
+    /** The checks of a restart before any file is touched. */
+    void
+    check_checkpoint(const std::string &checkpoint, CheckpointData &data) const;
+    /** All of a checkpoint but its vectors. */
+    void
+    save_run(CheckpointData &data);
+    /** Its vectors (the mesh file into `directory`); true if distributed. */
+    bool
+    save_vectors(CheckpointData &data, const std::string &directory);
     /** The vectors a checkpoint holds, in their order. */
     std::vector<VectorType *>
     checkpoint_vectors();
-    /** A replicated mesh: every degree of freedom in the order of the cells
-     * (the same on any number of processes), for a checkpoint. */
-    std::vector<types::global_dof_index>
-    cell_order_of_dofs() const;
     void
     output_step(const unsigned int newton_iterations,
                 const double       residual,
@@ -317,10 +289,7 @@ namespace ContactDynamics
     /** A degree of freedom held fixed (Dirichlet or an unused multiplier),
      * not one that follows others (a hanging node). */
     bool
-    is_held(const types::global_dof_index i) const
-    {
-      return held_dofs.is_element(i);
-    }
+    is_held(const types::global_dof_index i) const;
 
     /** `x` with the ghost entries this process reads, in `ghost`. */
     const VectorType &
@@ -330,20 +299,9 @@ namespace ContactDynamics
     std::ostream &
     screen_log();
 
-    /**
-     * Corners of neo-Hookean elements where det F <= 0 in the trial state
-     * u_ghost: "" if none, else what and where (the same on every process).
-     * The quadrature points can all be fine while a corner is inverted, and
-     * the stresses written there would be NaN.
-     */
-    std::string
-    inverted_corner() const;
-
-    /**
-     * Ends the run at the last completed step: writes its VTU files if the
+    /** Ends the run at the last completed step: its VTU files if the
      * interval skipped them, then throws ExcCollective with `reason` and
-     * where the outputs are (or ExcStopped for a signal), then `epilogue`.
-     */
+     * where the outputs are (or ExcStopped for a signal), then `epilogue`. */
     [[noreturn]] void
     stop_run(const std::string &reason,
              const int          signal   = 0,
@@ -374,11 +332,7 @@ namespace ContactDynamics
     bool
     adaptation_due(const unsigned int completed,
                    const unsigned int active,
-                   const unsigned int active_before) const
-    {
-      return completed % refinement.interval == 0 ||
-             (refinement.on_contact_change && active != active_before);
-    }
+                   const unsigned int active_before) const;
 
     MPI_Comm                                          mpi_communicator;
     ParallelParameters                                parallel_parameters;
@@ -395,59 +349,45 @@ namespace ContactDynamics
     bool                      any_hanging_nodes = false; // on any process
     // Dirichlet dofs, and those plus the unused multipliers
     IndexSet dirichlet_dofs, held_dofs;
-    /** Prescribed values at t into x, then the hanging nodes that follow
-     * them. */
+    /** Prescribed values at t into x, then the hanging nodes after them. */
     void
     set_prescribed_values(VectorType &x, const double t);
     std::unique_ptr<SolidMechanics<dim>> mechanics;
 
-    // state at t_n, the trial state at t_{n+1}, and work vectors
-    VectorType u, v, a, u_new, v_new, a_new;
-    VectorType residual, residual_full, residual_full_old, increment,
-      body_force;
-    // generalized-alpha and HHT: the forces F_n of the committed state
-    // (residual_full_old without M a_n) and the balanced acceleration
-    VectorType force_old, effective_acceleration;
+    // the owners of the history, registered in the order of a checkpoint's
+    // vectors: the state of the bodies, the time-step control, the energies
+    BodyState                   state;
+    TimeStepController          controller{integrator};
+    EnergyAccount<dim>          energy_account{integrator};
+    HistoryRegistry<RunContext> history;
+    // (the names the numerics use for the state's vectors)
+    VectorType &u = state.u, &v = state.v, &a = state.a, &u_new = state.u_new,
+               &v_new = state.v_new, &a_new = state.a_new;
+    VectorType &residual_full          = state.residual_full,
+               &residual_full_old      = state.residual_full_old;
+    VectorType &force_old              = state.force_old,
+               &effective_acceleration = state.effective_acceleration;
+    // work vectors
+    VectorType residual, increment, body_force;
     // ghosted: the trial state of the last assembly (committed to the
     // contact when the step converges), and scratch copies
     VectorType    u_ghost, v_ghost, scratch_ghost[2];
     std::ofstream null_stream; // never opened: discards what it gets
 
-    double       time                         = 0;
-    double       dt_current                   = 0;
-    unsigned int step                         = 0;
-    unsigned int cumulative_newton_iterations = 0;
-    unsigned int time_step_cuts               = 0;
-    // adaptive time steps (Time integration/Error tolerance): the local
-    // error estimate of the last converged step, the factor for the next
-    // dt, whether the last attempt was rejected by it, and how many were
-    double       error_estimate       = 0;
-    double       step_factor          = 1;
-    bool         rejected_by_estimate = false;
-    unsigned int rejected_steps       = 0;
+    double       time = 0;
+    unsigned int step = 0;
     IndexSet     displacement_dofs; // locally owned
-    // the mean accelerations (v_{n+1} - v_n) / dt of the trial step and of
-    // the step before (its length dt_before), if that was on this mesh
-    VectorType mean_acceleration, mean_acceleration_before;
-    double     dt_before              = 0;
-    bool       have_mean_acceleration = false;
-    // the time-step controller of run(): the next dt, good steps since a
-    // Newton failure (two kinds of counting)
-    double       dt_next        = 0;
-    unsigned int good_since_cut = 0;
-    unsigned int cut_since      = 2;
     // checkpoints: the parameters to store, the step of the last one and
     // the wall time since; whether this run continues a checkpoint
-    std::string   parameters_text;
-    int           last_checkpoint_step = -1;
-    Timer         checkpoint_timer;
-    bool          restarting        = false;
-    unsigned int  linear_iterations = 0; // GMRES, last step
-    bool          structure_changed = true;
-    int           last_vtu_step     = -1;
-    std::string   last_failure; // why the last failed step failed
-    std::string   linear_solver_name;
-    EnergyBalance energies;
+    std::string  parameters_text;
+    int          last_checkpoint_step = -1;
+    Timer        checkpoint_timer;
+    bool         restarting        = false;
+    unsigned int linear_iterations = 0; // GMRES, last step
+    bool         structure_changed = true;
+    int          last_vtu_step     = -1;
+    std::string  last_failure; // why the last failed step failed
+    std::string  linear_solver_name;
 
     std::unique_ptr<StatisticsFile>      statistics;
     std::unique_ptr<SolutionWriter<dim>> solution_writer;

@@ -13,6 +13,7 @@
 #include <contact_dynamics/mechanics/material.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 DEAL_II_NAMESPACE_OPEN
@@ -139,6 +140,15 @@ namespace ContactDynamics
     {
       return *materials[id];
     }
+
+    /**
+     * Corners of neo-Hookean elements where det F <= 0 in the state
+     * `u_ghost` (ghosted): "" if none, else what and where (the same on
+     * every process). The quadrature points can all be fine while a corner
+     * is inverted, and the stresses written there would be NaN.
+     */
+    std::string
+    inverted_corner(const VectorType &u_ghost) const;
 
   private:
     using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
