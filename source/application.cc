@@ -334,6 +334,93 @@ namespace ContactDynamics
         }
       prm.print_parameters(out, ParameterHandler::PRM);
     }
+
+    /**
+     * The threads per process: 1 unless DEAL_II_THREADS_PER_PROCESS asks
+     * for more. False (with a message) if its value is not allowed.
+     */
+    bool
+    threads_per_process(unsigned int &n_threads)
+    {
+      const char *threads = std::getenv("DEAL_II_THREADS_PER_PROCESS");
+      n_threads           = 1;
+      if (threads != nullptr)
+        {
+          char      *end   = nullptr;
+          const long value = std::strtol(threads, &end, 10);
+          if (end == threads || *end != '\0' || value < 1 || value > 1024)
+            {
+              std::cerr << "Error: the environment variable "
+                           "DEAL_II_THREADS_PER_PROCESS is '"
+                        << threads
+                        << "': it must be a whole number of threads per "
+                           "process in [1, 1024]."
+                        << std::endl;
+              return false;
+            }
+          n_threads = value;
+        }
+      return true;
+    }
+
+    /** What the command line `args` asks for, done; the exit status. */
+    int
+    run_arguments(const std::vector<std::string> &args, const bool root)
+    {
+      // the command line is the same on every process: its errors are
+      // collective
+      const auto one_file = [&](const std::size_t  first,
+                                const std::string &what) {
+        std::string files;
+        for (std::size_t i = first; i < args.size(); ++i)
+          files += " " + args[i];
+        AssertThrow(args.size() == first + 1 && args[first].rfind("--", 0) != 0,
+                    ExcCollective(what + "one parameter file expected, got " +
+                                  std::to_string(args.size() - first) +
+                                  (files.empty() ? "" : ":" + files) +
+                                  ". Run 'contact-dynamics --help'."));
+      };
+      if (args.empty() || args[0] == "--help" || args[0] == "-h")
+        {
+          if (root)
+            print_usage(std::cout);
+          return args.empty() ? 1 : 0;
+        }
+      if (args[0] == "--print-parameters")
+        {
+          if (args.size() > 1)
+            one_file(1, "--print-parameters: ");
+          std::ostringstream text;
+          print_parameters(args.size() == 2 ? args[1] : "", text);
+          if (root)
+            std::cout << text.str() << std::flush;
+          return 0;
+        }
+      if (args[0] == "--validate")
+        {
+          one_file(1, "--validate: ");
+          run_parameter_file(args[1], std::cout, true);
+          return 0;
+        }
+      if (args[0] == "--restart")
+        {
+          AssertThrow(args.size() == 2 || args.size() == 3,
+                      ExcCollective(
+                        "--restart: a directory and at most one parameter "
+                        "file expected. Run 'contact-dynamics --help'."));
+          run_parameter_file(args.size() == 3 ? args[2] : "",
+                             std::cout,
+                             false,
+                             args[1]);
+          return 0;
+        }
+      AssertThrow(args[0].rfind("--", 0) != 0,
+                  ExcCollective("Unknown option '" + args[0] +
+                                "'. Run 'contact-dynamics --help'."));
+      one_file(0, "");
+      run_parameter_file(args[0], std::cout, false);
+      return 0;
+    }
   } // namespace
 
   int
@@ -344,24 +431,9 @@ namespace ContactDynamics
     // 7.7 s instead of 5.0 s (TBB's idle workers take the core from the
     // solver) and the ironing no faster (the bulk assembly's scatter into
     // the Epetra matrix is serial); doc/parallel.md.
-    const char  *threads   = std::getenv("DEAL_II_THREADS_PER_PROCESS");
     unsigned int n_threads = 1;
-    if (threads != nullptr)
-      {
-        char      *end   = nullptr;
-        const long value = std::strtol(threads, &end, 10);
-        if (end == threads || *end != '\0' || value < 1 || value > 1024)
-          {
-            std::cerr << "Error: the environment variable "
-                         "DEAL_II_THREADS_PER_PROCESS is '"
-                      << threads
-                      << "': it must be a whole number of threads per "
-                         "process in [1, 1024]."
-                      << std::endl;
-            return 1;
-          }
-        n_threads = value;
-      }
+    if (!threads_per_process(n_threads))
+      return 1;
     // started without mpirun, Open MPI would spawn a daemon for the one
     // process (0.2 s of every run, measured): a run on its own needs none
     if (std::getenv("OMPI_COMM_WORLD_SIZE") == nullptr)
@@ -373,60 +445,7 @@ namespace ContactDynamics
     try
       {
         const std::vector<std::string> args(argv + 1, argv + argc);
-        // the command line is the same on every process: its errors are
-        // collective
-        const auto one_file = [&](const std::size_t  first,
-                                  const std::string &what) {
-          std::string files;
-          for (std::size_t i = first; i < args.size(); ++i)
-            files += " " + args[i];
-          AssertThrow(args.size() == first + 1 &&
-                        args[first].rfind("--", 0) != 0,
-                      ExcCollective(what + "one parameter file expected, got " +
-                                    std::to_string(args.size() - first) +
-                                    (files.empty() ? "" : ":" + files) +
-                                    ". Run 'contact-dynamics --help'."));
-        };
-        if (args.empty() || args[0] == "--help" || args[0] == "-h")
-          {
-            if (root)
-              print_usage(std::cout);
-            return args.empty() ? 1 : 0;
-          }
-        if (args[0] == "--print-parameters")
-          {
-            if (args.size() > 1)
-              one_file(1, "--print-parameters: ");
-            std::ostringstream text;
-            print_parameters(args.size() == 2 ? args[1] : "", text);
-            if (root)
-              std::cout << text.str() << std::flush;
-            return 0;
-          }
-        if (args[0] == "--validate")
-          {
-            one_file(1, "--validate: ");
-            run_parameter_file(args[1], std::cout, true);
-            return 0;
-          }
-        if (args[0] == "--restart")
-          {
-            AssertThrow(args.size() == 2 || args.size() == 3,
-                        ExcCollective(
-                          "--restart: a directory and at most one parameter "
-                          "file expected. Run 'contact-dynamics --help'."));
-            run_parameter_file(args.size() == 3 ? args[2] : "",
-                               std::cout,
-                               false,
-                               args[1]);
-            return 0;
-          }
-        AssertThrow(args[0].rfind("--", 0) != 0,
-                    ExcCollective("Unknown option '" + args[0] +
-                                  "'. Run 'contact-dynamics --help'."));
-        one_file(0, "");
-        run_parameter_file(args[0], std::cout, false);
-        return 0;
+        return run_arguments(args, root);
       }
     catch (const ExcStopped &e)
       {

@@ -11,13 +11,102 @@
 
 namespace ContactDynamics
 {
+  namespace
+  {
+    /**
+     * The records of the faces of the locally owned cells on the surfaces
+     * `ids`, oriented there: the nodes' coordinates, their dofs, depth,
+     * and whether the face's normal by its node order points into the cell
+     * (then the order is reversed).
+     */
+    template <int dim>
+    std::vector<double>
+    owned_face_records(const DoFHandler<dim>                 &dof_handler,
+                       const std::vector<types::boundary_id> &ids,
+                       const unsigned int                     n_node_components)
+    {
+      const auto            &fe  = dof_handler.get_fe();
+      constexpr unsigned int n_v = ContactSurface<dim>::nodes_per_face;
+      std::vector<double>    records;
+      std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                std::find(ids.begin(),
+                          ids.end(),
+                          cell->face(f)->boundary_id()) != ids.end())
+              {
+                cell->get_dof_indices(cell_dofs);
+                std::array<unsigned int, n_v> v;
+                for (unsigned int i = 0; i < n_v; ++i)
+                  v[i] = GeometryInfo<dim>::face_to_cell_vertices(f, i);
+                const Tensor<1, dim> t =
+                  cell->vertex(v[1]) - cell->vertex(v[0]);
+                Tensor<1, dim> n;
+                if constexpr (dim == 2)
+                  {
+                    n[0] = t[1];
+                    n[1] = -t[0];
+                  }
+                else
+                  n = cross_product_3d(t,
+                                       cell->vertex(v[2]) - cell->vertex(v[0]));
+                for (const unsigned int cell_vertex : v)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    records.push_back(cell->vertex(cell_vertex)[d]);
+                for (const unsigned int cell_vertex : v)
+                  for (unsigned int c = 0; c < n_node_components; ++c)
+                    records.push_back(
+                      cell_dofs[fe.component_to_system_index(c, cell_vertex)]);
+                records.push_back(cell->measure() / cell->face(f)->measure());
+                records.push_back(
+                  n * (cell->face(f)->center() - cell->center()) < 0);
+              }
+      return records;
+    }
+
+    /**
+     * The integrals of the nodes' shape functions over the faces in the
+     * reference configuration.
+     */
+    template <int dim, typename Faces>
+    std::vector<double>
+    reference_weights(const std::vector<Point<dim>> &reference,
+                      const Faces                   &faces)
+    {
+      std::vector<double> reference_weight(reference.size(), 0.);
+      for (const auto &face : faces)
+        if constexpr (dim == 2)
+          {
+            const double length =
+              reference[face[0]].distance(reference[face[1]]);
+            reference_weight[face[0]] += length / 2;
+            reference_weight[face[1]] += length / 2;
+          }
+        else
+          {
+            std::array<Tensor<1, 3>, 4> x;
+            for (unsigned int v = 0; v < 4; ++v)
+              for (unsigned int d = 0; d < dim; ++d)
+                x[v][d] = reference[face[v]][d];
+            for (const auto &q : ClippingGeometry::face_points(x))
+              {
+                const auto N = ClippingGeometry::shape(q.xi, q.eta);
+                for (unsigned int v = 0; v < 4; ++v)
+                  reference_weight[face[v]] += q.weight * N[v];
+              }
+          }
+      return reference_weight;
+    }
+  } // namespace
+
   template <int dim>
   void
   ContactSurface<dim>::build(const DoFHandler<dim>                 &dof_handler,
                              const std::vector<types::boundary_id> &ids,
                              const unsigned int n_node_components)
   {
-    const auto &fe = dof_handler.get_fe();
     reference.clear();
     dofs.clear();
     faces.clear();
@@ -30,42 +119,10 @@ namespace ContactDynamics
     // distributed mesh. A record is the nodes' coordinates, their dofs,
     // depth, and whether the face's normal by its node order points into
     // the cell (then the order is reversed).
-    constexpr unsigned int n_v      = nodes_per_face;
-    const unsigned int  record_size = n_v * dim + n_v * n_node_components + 2;
-    std::vector<double> records;
-    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              std::find(ids.begin(), ids.end(), cell->face(f)->boundary_id()) !=
-                ids.end())
-            {
-              cell->get_dof_indices(cell_dofs);
-              std::array<unsigned int, n_v> v;
-              for (unsigned int i = 0; i < n_v; ++i)
-                v[i] = GeometryInfo<dim>::face_to_cell_vertices(f, i);
-              const Tensor<1, dim> t = cell->vertex(v[1]) - cell->vertex(v[0]);
-              Tensor<1, dim>       n;
-              if constexpr (dim == 2)
-                {
-                  n[0] = t[1];
-                  n[1] = -t[0];
-                }
-              else
-                n =
-                  cross_product_3d(t, cell->vertex(v[2]) - cell->vertex(v[0]));
-              for (const unsigned int cell_vertex : v)
-                for (unsigned int d = 0; d < dim; ++d)
-                  records.push_back(cell->vertex(cell_vertex)[d]);
-              for (const unsigned int cell_vertex : v)
-                for (unsigned int c = 0; c < n_node_components; ++c)
-                  records.push_back(
-                    cell_dofs[fe.component_to_system_index(c, cell_vertex)]);
-              records.push_back(cell->measure() / cell->face(f)->measure());
-              records.push_back(n * (cell->face(f)->center() - cell->center()) <
-                                0);
-            }
+    constexpr unsigned int n_v     = nodes_per_face;
+    const unsigned int record_size = n_v * dim + n_v * n_node_components + 2;
+    const std::vector<double> records =
+      owned_face_records(dof_handler, ids, n_node_components);
     const auto mpi_communicator = dof_handler.get_communicator();
     const std::vector<std::vector<double>> all_records =
       Utilities::MPI::n_mpi_processes(mpi_communicator) > 1 ?
@@ -111,27 +168,7 @@ namespace ContactDynamics
           depth.push_back(record[record_size - 2]);
         }
 
-    reference_weight.assign(reference.size(), 0.);
-    for (const auto &face : faces)
-      if constexpr (dim == 2)
-        {
-          const double length = reference[face[0]].distance(reference[face[1]]);
-          reference_weight[face[0]] += length / 2;
-          reference_weight[face[1]] += length / 2;
-        }
-      else
-        {
-          std::array<Tensor<1, 3>, 4> x;
-          for (unsigned int v = 0; v < 4; ++v)
-            for (unsigned int d = 0; d < dim; ++d)
-              x[v][d] = reference[face[v]][d];
-          for (const auto &q : ClippingGeometry::face_points(x))
-            {
-              const auto N = ClippingGeometry::shape(q.xi, q.eta);
-              for (unsigned int v = 0; v < 4; ++v)
-                reference_weight[face[v]] += q.weight * N[v];
-            }
-        }
+    reference_weight = reference_weights<dim>(reference, faces);
     if (dim == 2)
       for (const auto &nf : node_faces)
         AssertThrow(nf.size() <= 2,

@@ -520,6 +520,143 @@ namespace ContactDynamics
             }
         }
     }
+
+    // The segments of face e with its candidates, their integrals summed
+    // into `sums`
+    template <typename AD, typename PairData>
+    Segments<AD>
+    integrate_segments(const PairData        &pair,
+                       const unsigned int     e,
+                       const MortarPatch<AD> &m,
+                       const QGauss<1>       &gauss,
+                       const bool             rates,
+                       const bool             exact,
+                       const double           minimum_covered_fraction,
+                       SegmentSums<AD>       &sums)
+    {
+      for (unsigned int i = 0; i < 2; ++i)
+        sums.gap[i] = sums.weight[i] = sums.gap_rate[i] = sums.slip_rate[i] =
+          AD(0.);
+      auto segments =
+        mortar_segments(pair, e, m, exact, minimum_covered_fraction);
+      for (unsigned int k = 0; k < segments.faces.size(); ++k)
+        integrate_segment(pair,
+                          e,
+                          segments.faces[k],
+                          m,
+                          segments.bounds[k].first,
+                          segments.bounds[k].second,
+                          segments.dual,
+                          gauss,
+                          rates,
+                          exact,
+                          sums);
+      return segments;
+    }
+
+    // The exact directions of the normal force and their derivatives
+    // (exact_directions()), seeded in the positions of the secondary nodes
+    // and of the primary nodes of the `covering_faces`: the gaps do not
+    // depend on the others
+    template <int dim, typename PairData>
+    void
+    exact_normal_directions(
+      const PairData    &pair,
+      const unsigned int e,
+      const std::vector<std::pair<const ContactSurface<dim> *, unsigned int>>
+                                                 &nodes,
+      const std::vector<unsigned int>            &covering_faces,
+      const std::vector<types::global_dof_index> &unknowns,
+      const TrialState                           &state,
+      const QGauss<1>                            &gauss,
+      const double                                minimum_covered_fraction,
+      const std::array<double, 2>                &lambda,
+      std::vector<std::array<double, 2>>         &direction,
+      std::vector<double>                        &hessian)
+    {
+      const auto            &s = pair.secondary;
+      const auto            &p = pair.primary;
+      std::set<unsigned int> covering;
+      for (const unsigned int pf : covering_faces)
+        covering.insert(p.faces[pf].begin(), p.faces[pf].end());
+      std::vector<unsigned int> seeded;
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        if (nodes[k].first == &s || covering.count(nodes[k].second) > 0)
+          for (unsigned int d = 0; d < 2; ++d)
+            seeded.push_back(2 * k + d);
+      ContactAD::dispatch_second(seeded.size(), [&](const auto zero) {
+        exact_directions<std::decay_t<decltype(zero)>>(pair,
+                                                       e,
+                                                       nodes,
+                                                       seeded,
+                                                       unknowns,
+                                                       state,
+                                                       gauss,
+                                                       minimum_covered_fraction,
+                                                       lambda,
+                                                       direction,
+                                                       hessian);
+      });
+    }
+
+    // 'approximate': the directions w_j d(g_j / w_j)/du_i of the normal
+    // force from the exact face geometry, without their derivatives
+    template <typename AD, typename PairData>
+    void
+    approximate_directions(const PairData                     &pair,
+                           const unsigned int                  e,
+                           const MortarPatch<AD>              &m,
+                           const QGauss<1>                    &gauss,
+                           const double                        minimum_fraction,
+                           std::vector<std::array<double, 2>> &direction)
+    {
+      const unsigned int n_positions = direction.size();
+      MortarPatch<AD>    exact_patch = m;
+      set_face_geometry(pair.secondary, e, true, exact_patch);
+      const auto f = weighted_gaps(
+        pair,
+        exact_patch,
+        mortar_segments(pair, e, exact_patch, true, minimum_fraction),
+        gauss);
+      for (unsigned int j = 0; j < 2; ++j)
+        if (f.weight[j].val() > 0)
+          {
+            const double ratio = f.gap[j].val() / f.weight[j].val();
+            for (unsigned int i = 0; i < n_positions; ++i)
+              direction[i][j] =
+                (f.gap[j].size() > int(i) ? f.gap[j].dx(i) : 0.) -
+                ratio * (f.weight[j].size() > int(i) ? f.weight[j].dx(i) : 0.);
+          }
+    }
+
+    // The rows of the segment sums (friction and, approximate, the normal
+    // force) into `forces`, the face's gaps, weights and rates into the
+    // pair's nodes
+    template <typename AD, typename PairData, typename PatchForces>
+    void
+    add_segment_sums(PairData                                   &pair,
+                     const unsigned int                          e,
+                     const SegmentSums<AD>                      &sums,
+                     const std::vector<types::global_dof_index> &unknowns,
+                     PatchForces                                &forces)
+    {
+      const auto &face = pair.secondary.faces[e];
+      for (const auto &r : sums.rows)
+        forces.add(r.first,
+                   r.second.val(),
+                   ContactAD::derivatives(r.second, unknowns));
+      for (const auto &r : sums.tangential_rows)
+        forces.add_tangential(r.first, r.second);
+      for (unsigned int i = 0; i < 2; ++i)
+        {
+          ContactAD::add_to(pair.gap[face[i]], sums.gap[i], unknowns);
+          ContactAD::add_to(pair.weight[face[i]], sums.weight[i], unknowns);
+          ContactAD::add_to(pair.gap_rate[face[i]], sums.gap_rate[i], unknowns);
+          ContactAD::add_to(pair.slip_rate[face[i]][0],
+                            sums.slip_rate[i],
+                            unknowns);
+        }
+    }
   } // namespace
 
   template <int dim>
@@ -585,23 +722,14 @@ namespace ContactDynamics
     // (the first rate of a held node, the velocity-level condition)
     const bool rates = this->complementarity.holds_contact() && state.dynamic;
     SegmentSums<AD> sums;
-    for (unsigned int i = 0; i < 2; ++i)
-      sums.gap[i] = sums.weight[i] = sums.gap_rate[i] = sums.slip_rate[i] =
-        AD(0.);
-    const auto segments =
-      mortar_segments(pair, e, m, exact, minimum_covered_fraction);
-    for (unsigned int k = 0; k < segments.faces.size(); ++k)
-      integrate_segment(pair,
-                        e,
-                        segments.faces[k],
-                        m,
-                        segments.bounds[k].first,
-                        segments.bounds[k].second,
-                        segments.dual,
-                        gauss,
-                        rates,
-                        exact,
-                        sums);
+    const auto      segments = integrate_segments(pair,
+                                             e,
+                                             m,
+                                             gauss,
+                                             rates,
+                                             exact,
+                                             minimum_covered_fraction,
+                                             sums);
 
     // The normal force is -sum_j lambda_j w_j d(g_j / w_j)/du, with this
     // face's weighted gap g_j and weight w_j of node j: the derivative of
@@ -615,52 +743,24 @@ namespace ContactDynamics
     std::vector<std::array<double, 2>> direction(n_positions, {{0., 0.}});
     std::vector<double> hessian(exact ? n_positions * n_positions : 0);
     if (exact && !segments.faces.empty())
-      {
-        // the positions of the secondary nodes and of the primary nodes
-        // of the covering faces: the gaps do not depend on the others
-        std::set<unsigned int> covering;
-        for (const unsigned int pf : segments.faces)
-          covering.insert(p.faces[pf].begin(), p.faces[pf].end());
-        std::vector<unsigned int> seeded;
-        for (unsigned int k = 0; k < nodes.size(); ++k)
-          if (nodes[k].first == &s || covering.count(nodes[k].second) > 0)
-            for (unsigned int d = 0; d < 2; ++d)
-              seeded.push_back(2 * k + d);
-        ContactAD::dispatch_second(seeded.size(), [&](const auto zero) {
-          exact_directions<std::decay_t<decltype(zero)>>(
-            pair,
-            e,
-            nodes,
-            seeded,
-            unknowns,
-            state,
-            gauss,
-            minimum_covered_fraction,
-            lambda,
-            direction,
-            hessian);
-        });
-      }
+      exact_normal_directions(pair,
+                              e,
+                              nodes,
+                              segments.faces,
+                              unknowns,
+                              state,
+                              gauss,
+                              minimum_covered_fraction,
+                              lambda,
+                              direction,
+                              hessian);
     else if (!exact)
-      {
-        MortarPatch<AD> exact_patch = m;
-        set_face_geometry(s, e, true, exact_patch);
-        const auto f = weighted_gaps(
-          pair,
-          exact_patch,
-          mortar_segments(pair, e, exact_patch, true, minimum_covered_fraction),
-          gauss);
-        for (unsigned int j = 0; j < 2; ++j)
-          if (f.weight[j].val() > 0)
-            {
-              const double ratio = f.gap[j].val() / f.weight[j].val();
-              for (unsigned int i = 0; i < n_positions; ++i)
-                direction[i][j] =
-                  (f.gap[j].size() > int(i) ? f.gap[j].dx(i) : 0.) -
-                  ratio *
-                    (f.weight[j].size() > int(i) ? f.weight[j].dx(i) : 0.);
-            }
-      }
+      approximate_directions(pair,
+                             e,
+                             m,
+                             gauss,
+                             minimum_covered_fraction,
+                             direction);
     // (approximate: the derivatives of the nodal-normal traction)
     forces.add_normal_rows(unknowns,
                            lambda,
@@ -679,21 +779,7 @@ namespace ContactDynamics
                                  if (r->second.dx(l) != 0)
                                    d.emplace_back(unknowns[l], r->second.dx(l));
                            });
-    for (const auto &r : sums.rows)
-      forces.add(r.first,
-                 r.second.val(),
-                 ContactAD::derivatives(r.second, unknowns));
-    for (const auto &r : sums.tangential_rows)
-      forces.add_tangential(r.first, r.second);
-    for (unsigned int i = 0; i < 2; ++i)
-      {
-        ContactAD::add_to(pair.gap[face[i]], sums.gap[i], unknowns);
-        ContactAD::add_to(pair.weight[face[i]], sums.weight[i], unknowns);
-        ContactAD::add_to(pair.gap_rate[face[i]], sums.gap_rate[i], unknowns);
-        ContactAD::add_to(pair.slip_rate[face[i]][0],
-                          sums.slip_rate[i],
-                          unknowns);
-      }
+    add_segment_sums(pair, e, sums, unknowns, forces);
   }
 
   template class MortarContact<2>;

@@ -54,7 +54,7 @@ namespace ContactDynamics
                                                   {1, 3},
                                                   {0, 1},
                                                   {2, 3}};
-      const Vec3<Number> a = y[ends[e][0]], d = y[ends[e][1]] - a;
+      const Vec3<Number>            a = y[ends[e][0]], d = y[ends[e][1]] - a;
       return ((x - a) * d) / (d * d);
     }
 
@@ -73,8 +73,12 @@ namespace ContactDynamics
     unsigned int
     projection_edge(const std::array<double, 2> &parameters)
     {
-      const auto on_end = [](const double t) { return t == 0. || t == 1.; };
-      const auto inside = [](const double t) { return t > 0. && t < 1.; };
+      const auto on_end = [](const double t) {
+        return t == 0. || t == 1.;
+      };
+      const auto inside = [](const double t) {
+        return t > 0. && t < 1.;
+      };
       if (on_end(parameters[0]) && inside(parameters[1]))
         return parameters[0] == 0. ? 0 : 1;
       if (on_end(parameters[1]) && inside(parameters[0]))
@@ -121,17 +125,16 @@ namespace ContactDynamics
           for (unsigned int a = 0; a < 4; ++a)
             y[a] = position(p, p.faces[f][a]);
           std::array<double, 2> t;
-          const bool            within =
-            closest_point(y, x, t[0], t[1]) &&
-            std::min(t[0], t[1]) >= -tolerance &&
-            std::max(t[0], t[1]) <= 1 + tolerance;
+          const bool            within = closest_point(y, x, t[0], t[1]) &&
+                              std::min(t[0], t[1]) >= -tolerance &&
+                              std::max(t[0], t[1]) <= 1 + tolerance;
           if (!within)
             {
               double nearest = 1e300;
               for (unsigned int e = 0; e < 4; ++e)
                 {
-                  const auto   q = edge_point(
-                    e, std::clamp(edge_parameter(y, x, e), 0., 1.));
+                  const auto q =
+                    edge_point(e, std::clamp(edge_parameter(y, x, e), 0., 1.));
                   const double d = norm(x - interpolate(y, q[0], q[1]));
                   if (d < nearest)
                     {
@@ -140,7 +143,7 @@ namespace ContactDynamics
                     }
                 }
             }
-          const double xi_c = std::clamp(t[0], 0., 1.),
+          const double xi_c  = std::clamp(t[0], 0., 1.),
                        eta_c = std::clamp(t[1], 0., 1.);
           if (!(face_normal(y, xi_c, eta_c) * n_s < 0))
             continue;
@@ -191,6 +194,107 @@ namespace ContactDynamics
           axis = d;
       return axis;
     }
+
+    // The closest point's parameters with, exact, their derivatives: those
+    // of the closest point of the surface or of an edge (none at a corner)
+    template <typename AD>
+    void
+    projection_parameters(const std::array<Vec3<AD>, 4> &y,
+                          const Vec3<AD>                &x,
+                          const std::array<double, 2>   &parameters,
+                          AD                            &xi,
+                          AD                            &eta)
+    {
+      const unsigned int edge = projection_edge(parameters);
+      double             xi_free, eta_free;
+      if (closest_point(values(y), values(x), xi_free, eta_free) &&
+          std::abs(xi_free - parameters[0]) +
+              std::abs(eta_free - parameters[1]) <
+            1e-12)
+        {
+          const auto r =
+            closest_point_with_derivatives(y, x, xi_free, eta_free);
+          xi  = r[0];
+          eta = r[1];
+        }
+      else if (edge < 4)
+        {
+          const auto q = edge_point(edge, edge_parameter(y, x, edge));
+          xi           = q[0];
+          eta          = q[1];
+        }
+    }
+
+    // The contact normal at (xi, eta) of the primary face: the face's
+    // normal, blended near the edges into the interpolated nodal normals;
+    // frozen (no derivatives) unless `exact`
+    template <typename AD>
+    Vec3<AD>
+    contact_normal(const Surface                 &p,
+                   const unsigned int             face,
+                   const std::array<Vec3<AD>, 4> &y,
+                   const NodeMap<AD>             &xp,
+                   const AD                      &xi,
+                   const AD                      &eta,
+                   const double                   smoothing_distance,
+                   const bool                     exact)
+    {
+      Vec3<AD> normal = face_normal(y, xi, eta);
+      if (smoothing_distance > 0)
+        {
+          // blended near the edges into the interpolated nodal normals
+          const auto N = shape(xi, eta);
+          Vec3<AD>   interpolated;
+          for (unsigned int a = 0; a < 4; ++a)
+            interpolated += N[a] * nodal_normal(p, p.faces[face][a], xp);
+          const AD w_xi  = end_weight(xi, smoothing_distance),
+                   w_eta = end_weight(eta, smoothing_distance);
+          const AD w     = 1. - (1. - w_xi) * (1. - w_eta);
+          normal += w * (interpolated / norm(interpolated) - normal);
+          normal /= norm(normal);
+        }
+      if (!exact)
+        for (unsigned int d = 0; d < 3; ++d)
+          normal[d] = AD(normal[d].val());
+      return normal;
+    }
+
+    // The nodal force f (tangential part f_t) on secondary node j and,
+    // with weights N(xi, eta), opposite on the primary face
+    template <typename AD, typename PatchForces>
+    void
+    add_nodal_force(const Surface                              &s,
+                    const Surface                              &p,
+                    const unsigned int                          j,
+                    const unsigned int                          face,
+                    const std::array<AD, 4>                    &N,
+                    const Vec3<AD>                             &f,
+                    const Vec3<AD>                             &f_t,
+                    const bool                                  friction,
+                    const std::vector<types::global_dof_index> &unknowns,
+                    PatchForces                                &forces)
+    {
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          forces.add(s.dofs[j][k],
+                     f[k].val(),
+                     ContactAD::derivatives(f[k], unknowns));
+          for (unsigned int a = 0; a < 4; ++a)
+            {
+              const AD row = -N[a] * f[k];
+              forces.add(p.dofs[p.faces[face][a]][k],
+                         row.val(),
+                         ContactAD::derivatives(row, unknowns));
+            }
+          if (friction)
+            {
+              forces.add_tangential(s.dofs[j][k], f_t[k].val());
+              for (unsigned int a = 0; a < 4; ++a)
+                forces.add_tangential(p.dofs[p.faces[face][a]][k],
+                                      -N[a].val() * f_t[k].val());
+            }
+        }
+    }
   } // namespace
 
 
@@ -211,16 +315,21 @@ namespace ContactDynamics
     auto                &current    = trial_face[pair_index];
     current.resize(s.n_nodes(), Surface::invalid);
     std::array<double, 2> parameters;
-    const unsigned int    face = closest_face(
-      s, p, j, pair.candidates[j], state.u, current[j], parameters);
-    current[j] = face;
+    const unsigned int    face = closest_face(s,
+                                           p,
+                                           j,
+                                           pair.candidates[j],
+                                           state.u,
+                                           current[j],
+                                           parameters);
+    current[j]                 = face;
     if (face == Surface::invalid)
       return; // no projection: the node is inactive
 
     // the patch reads the projection's face only (and, for the smoothed
     // normal, the faces around its nodes)
     const std::vector<unsigned int> faces{face};
-    const auto unknowns = patch_unknowns(pair, j, faces);
+    const auto                      unknowns = patch_unknowns(pair, j, faces);
     ContactAD::dispatch(unknowns.size(), [&](const auto zero) {
       using AD = std::decay_t<decltype(zero)>;
       ContactAD::NodeVariables<3, AD> variables(unknowns, state);
@@ -236,48 +345,9 @@ namespace ContactDynamics
       const auto y = face_nodes(p, face, xp);
       AD         xi(parameters[0]), eta(parameters[1]);
       if (exact)
-        {
-          // the derivatives of the closest point, of the surface or of an
-          // edge (none at a corner)
-          const unsigned int edge = projection_edge(parameters);
-          double             xi_free, eta_free;
-          if (closest_point(values(y), values(x), xi_free, eta_free) &&
-              std::abs(xi_free - parameters[0]) +
-                  std::abs(eta_free - parameters[1]) <
-                1e-12)
-            {
-              const auto r = closest_point_with_derivatives(y,
-                                                            x,
-                                                            xi_free,
-                                                            eta_free);
-              xi           = r[0];
-              eta          = r[1];
-            }
-          else if (edge < 4)
-            {
-              const auto q = edge_point(edge, edge_parameter(y, x, edge));
-              xi           = q[0];
-              eta          = q[1];
-            }
-        }
-
-      Vec3<AD> normal = face_normal(y, xi, eta);
-      if (smoothing_distance > 0)
-        {
-          // blended near the edges into the interpolated nodal normals
-          const auto N = shape(xi, eta);
-          Vec3<AD>   interpolated;
-          for (unsigned int a = 0; a < 4; ++a)
-            interpolated += N[a] * nodal_normal(p, p.faces[face][a], xp);
-          const AD w_xi  = end_weight(xi, smoothing_distance),
-                   w_eta = end_weight(eta, smoothing_distance);
-          const AD w     = 1. - (1. - w_xi) * (1. - w_eta);
-          normal += w * (interpolated / norm(interpolated) - normal);
-          normal /= norm(normal);
-        }
-      if (!exact)
-        for (unsigned int d = 0; d < 3; ++d)
-          normal[d] = AD(normal[d].val());
+        projection_parameters(y, x, parameters, xi, eta);
+      const Vec3<AD> normal =
+        contact_normal(p, face, y, xp, xi, eta, smoothing_distance, exact);
 
       const auto     N   = shape(xi, eta);
       const Vec3<AD> x_p = interpolate(y, xi, eta);
@@ -286,8 +356,8 @@ namespace ContactDynamics
       pair.weight[j].value += 1.;
 
       // the secondary side's normal and tangents
-      const Vec3<AD> n_secondary = -normal;
-      const bool     friction    = pair.friction_coefficient > 0;
+      const Vec3<AD>          n_secondary = -normal;
+      const bool              friction    = pair.friction_coefficient > 0;
       std::array<Vec3<AD>, 2> tangent;
       if (friction)
         tangent = tangent_basis(n_secondary, face_tangent_axis(p, face));
@@ -314,26 +384,7 @@ namespace ContactDynamics
         for (unsigned int a = 0; a < 2; ++a)
           f_t += AD(lambda_t[a] * L) * tangent[a];
       const Vec3<AD> f = AD(lambda * L) * n_secondary + f_t;
-      for (unsigned int k = 0; k < 3; ++k)
-        {
-          forces.add(s.dofs[j][k],
-                     f[k].val(),
-                     ContactAD::derivatives(f[k], unknowns));
-          for (unsigned int a = 0; a < 4; ++a)
-            {
-              const AD row = -N[a] * f[k];
-              forces.add(p.dofs[p.faces[face][a]][k],
-                         row.val(),
-                         ContactAD::derivatives(row, unknowns));
-            }
-          if (friction)
-            {
-              forces.add_tangential(s.dofs[j][k], f_t[k].val());
-              for (unsigned int a = 0; a < 4; ++a)
-                forces.add_tangential(p.dofs[p.faces[face][a]][k],
-                                      -N[a].val() * f_t[k].val());
-            }
-        }
+      add_nodal_force(s, p, j, face, N, f, f_t, friction, unknowns, forces);
     });
   }
 } // namespace ContactDynamics

@@ -213,6 +213,67 @@ namespace ContactDynamics
                                                         normal);
       return outward * normal >= 0 && phi > 0;
     }
+
+    // The directions w_j d(g_j / w_j)/du_i of the normal force of face
+    // `face` of `s` against the obstacle at `place`, with their
+    // derivatives weighted with the multipliers, hessian[i n + l] = sum_j
+    // lambda_j d direction[i][j]/du_l: second derivatives in the positions
+    template <int dim, typename Face>
+    void
+    obstacle_directions(
+      const RigidObstacle<dim>                             &obstacle,
+      const typename RigidObstacle<dim>::Placement         &place,
+      const ContactSurface<dim>                            &s,
+      const Face                                           &face,
+      const TrialState                                     &state,
+      const std::vector<types::global_dof_index>           &unknowns,
+      const QGauss<dim - 1>                                &quadrature,
+      const std::array<double, nodes_per_face<dim>>        &lambda,
+      std::vector<std::array<double, nodes_per_face<dim>>> &direction,
+      std::vector<double>                                  &hessian)
+    {
+      constexpr unsigned int n           = nodes_per_face<dim>;
+      constexpr unsigned int n_positions = n * dim;
+      ContactAD::dispatch_second(n_positions, [&](const auto zero) {
+        using AD2   = std::decay_t<decltype(zero)>;
+        using Inner = typename AD2::value_type;
+        std::array<Vector<dim, AD2>, n> x;
+        for (unsigned int a = 0; a < n; ++a)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const unsigned int i = a * dim + d;
+              const double       value =
+                s.reference[face[a]][d] + state.u(unknowns[i]);
+              x[a][d] = AD2(n_positions, i, Inner(n_positions, i, value));
+            }
+        const auto sums = face_sums<dim, AD2>(obstacle,
+                                              place,
+                                              x,
+                                              nullptr,
+                                              nullptr,
+                                              nullptr,
+                                              quadrature);
+        for (unsigned int i = 0; i < n_positions; ++i)
+          {
+            std::array<Inner, n> d;
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                const AD2 ratio = sums.gap[j] / sums.weight[j];
+                d[j]            = sums.weight[j].val() *
+                       (ratio.size() > int(i) ? ratio.dx(i) : Inner(0.));
+                direction[i][j] = d[j].val();
+              }
+            for (unsigned int l = 0; l < n_positions; ++l)
+              {
+                double h = 0;
+                for (unsigned int j = 0; j < n; ++j)
+                  if (d[j].size() > int(l))
+                    h += lambda[j] * d[j].dx(l);
+                hessian[i * n_positions + l] = h;
+              }
+          }
+      });
+    }
   } // namespace
 
 
@@ -360,44 +421,16 @@ namespace ContactDynamics
     // positions
     std::vector<std::array<double, n>> direction(n_positions);
     std::vector<double>                hessian(n_positions * n_positions);
-    ContactAD::dispatch_second(n_positions, [&](const auto zero) {
-      using AD2   = std::decay_t<decltype(zero)>;
-      using Inner = typename AD2::value_type;
-      std::array<Vector<dim, AD2>, n> x;
-      for (unsigned int a = 0; a < n; ++a)
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const unsigned int i = a * dim + d;
-            const double value = s.reference[face[a]][d] + state.u(unknowns[i]);
-            x[a][d] = AD2(n_positions, i, Inner(n_positions, i, value));
-          }
-      const auto sums = face_sums<dim, AD2>(*pair.obstacle,
-                                            pair.trial_place,
-                                            x,
-                                            nullptr,
-                                            nullptr,
-                                            nullptr,
-                                            quadrature);
-      for (unsigned int i = 0; i < n_positions; ++i)
-        {
-          std::array<Inner, n> d;
-          for (unsigned int j = 0; j < n; ++j)
-            {
-              const AD2 ratio = sums.gap[j] / sums.weight[j];
-              d[j]            = sums.weight[j].val() *
-                     (ratio.size() > int(i) ? ratio.dx(i) : Inner(0.));
-              direction[i][j] = d[j].val();
-            }
-          for (unsigned int l = 0; l < n_positions; ++l)
-            {
-              double h = 0;
-              for (unsigned int j = 0; j < n; ++j)
-                if (d[j].size() > int(l))
-                  h += lambda[j] * d[j].dx(l);
-              hessian[i * n_positions + l] = h;
-            }
-        }
-    });
+    obstacle_directions(*pair.obstacle,
+                        pair.trial_place,
+                        s,
+                        face,
+                        state,
+                        unknowns,
+                        quadrature,
+                        lambda,
+                        direction,
+                        hessian);
     forces.add_normal_rows(unknowns,
                            lambda,
                            direction,

@@ -105,6 +105,124 @@ namespace ContactDynamics
     coarsen           = prm.get_bool("Coarsen");
   }
 
+  namespace
+  {
+    /** An owned cell with its distance to the contact zone and diameter. */
+    template <int dim>
+    struct MeasuredCell
+    {
+      typename Triangulation<dim>::active_cell_iterator cell;
+      double                                            distance, diameter;
+    };
+
+    /**
+     * The distance of each owned cell's current position to the contact
+     * zone (its flags cleared), and `zone_diameter`: the largest diameter a
+     * cell touching the contact zone would have at the top level (cells
+     * are never above it), the unit of the buffer, so that a graded mesh's
+     * large far cells do not reach the zone by their own size.
+     */
+    template <int dim>
+    std::vector<MeasuredCell<dim>>
+    measure_cells(const DoFHandler<dim, dim>    &dof_handler,
+                  const VectorType              &u,
+                  const std::vector<Point<dim>> &contact_points,
+                  const unsigned int             top,
+                  double                        &zone_diameter)
+    {
+      const auto                     tree = pack_rtree(contact_points);
+      const unsigned int             kids = 1u << dim;
+      std::vector<MeasuredCell<dim>> measured;
+      zone_diameter = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          if (!cell->is_locally_owned())
+            continue;
+          cell->clear_refine_flag();
+          cell->clear_coarsen_flag();
+          Point<dim>                       center;
+          std::array<Point<dim>, 1 << dim> x;
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              x[v] = cell->vertex(v);
+              for (unsigned int d = 0; d < dim; ++d)
+                x[v][d] += u(cell->vertex_dof_index(v, d));
+              center += x[v] / double(kids);
+            }
+          double radius = 0;
+          for (const auto &p : x)
+            radius = std::max(radius, center.distance(p));
+          double distance = std::numeric_limits<double>::infinity();
+          if (!contact_points.empty())
+            {
+              std::vector<Point<dim>> nearest;
+              tree.query(boost::geometry::index::nearest(center, 1),
+                         std::back_inserter(nearest));
+              distance = std::max(0., center.distance(nearest[0]) - radius);
+            }
+          const double diameter = 2 * radius;
+          if (distance == 0)
+            zone_diameter = std::max(
+              zone_diameter,
+              std::ldexp(diameter,
+                         int(cell->level()) -
+                           int(std::max<unsigned int>(top, cell->level()))));
+          measured.push_back(
+            {typename Triangulation<dim>::active_cell_iterator(cell),
+             distance,
+             diameter});
+        }
+      return measured;
+    }
+
+    /**
+     * Flags the cells to refine among `refine` (relative distance, cell)
+     * within the cell limit: the nearest cells only (a bisection on the
+     * relative distance, the same on every process). The number of cells
+     * of all processes left unflagged.
+     */
+    template <int dim>
+    unsigned int
+    flag_within_limit(
+      const std::vector<
+        std::pair<double, typename Triangulation<dim>::active_cell_iterator>>
+                                 &refine,
+      const Triangulation<dim>   &tria,
+      const RefinementParameters &parameters,
+      const MPI_Comm              comm)
+    {
+      const unsigned int kids     = 1u << dim;
+      const double       buffer   = parameters.buffer_cells;
+      const double       n_cells  = tria.n_global_active_cells();
+      const auto         n_refine = [&](const double threshold) {
+        double n = 0;
+        for (const auto &r : refine)
+          n += r.first <= threshold;
+        return Utilities::MPI::sum(n, comm);
+      };
+      const double room =
+        (double(parameters.maximum_cells) - n_cells) / (kids - 1);
+      double threshold = buffer;
+      if (n_refine(threshold) > room)
+        {
+          double low = -1, high = buffer;
+          for (unsigned int i = 0; i < 50; ++i)
+            {
+              const double mid                    = 0.5 * (low + high);
+              (n_refine(mid) > room ? high : low) = mid;
+            }
+          threshold = low;
+        }
+      unsigned int dropped = 0;
+      for (const auto &r : refine)
+        if (r.first <= threshold)
+          r.second->set_refine_flag();
+        else
+          ++dropped;
+      return Utilities::MPI::sum(dropped, comm);
+    }
+  } // namespace
+
   template <int dim>
   unsigned int
   mark_cells_near_contact(const DoFHandler<dim, dim>    &dof_handler,
@@ -114,62 +232,14 @@ namespace ContactDynamics
                           const unsigned int             base_level)
   {
     const MPI_Comm     comm   = dof_handler.get_communicator();
-    const auto         tree   = pack_rtree(contact_points);
     const auto        &tria   = dof_handler.get_triangulation();
     const double       buffer = parameters.buffer_cells;
     const unsigned int top    = base_level + parameters.maximum_levels;
-    const unsigned int kids   = 1u << dim;
 
     // distance of each owned cell's current position to the contact zone
-    struct Measured
-    {
-      typename Triangulation<dim>::active_cell_iterator cell;
-      double                                            distance, diameter;
-    };
-    std::vector<Measured> measured;
-    // the largest diameter a cell touching the contact zone would have at
-    // the top level (cells are never above it): the unit of the buffer, so
-    // that a graded mesh's large far cells do not reach the zone by their
-    // own size
-    double zone_diameter = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        if (!cell->is_locally_owned())
-          continue;
-        cell->clear_refine_flag();
-        cell->clear_coarsen_flag();
-        Point<dim>                       center;
-        std::array<Point<dim>, 1 << dim> x;
-        for (const unsigned int v : cell->vertex_indices())
-          {
-            x[v] = cell->vertex(v);
-            for (unsigned int d = 0; d < dim; ++d)
-              x[v][d] += u(cell->vertex_dof_index(v, d));
-            center += x[v] / double(kids);
-          }
-        double radius = 0;
-        for (const auto &p : x)
-          radius = std::max(radius, center.distance(p));
-        double distance = std::numeric_limits<double>::infinity();
-        if (!contact_points.empty())
-          {
-            std::vector<Point<dim>> nearest;
-            tree.query(boost::geometry::index::nearest(center, 1),
-                       std::back_inserter(nearest));
-            distance = std::max(0., center.distance(nearest[0]) - radius);
-          }
-        const double diameter = 2 * radius;
-        if (distance == 0)
-          zone_diameter = std::max(
-            zone_diameter,
-            std::ldexp(diameter,
-                       int(cell->level()) -
-                         int(std::max<unsigned int>(top, cell->level()))));
-        measured.push_back(
-          {typename Triangulation<dim>::active_cell_iterator(cell),
-           distance,
-           diameter});
-      }
+    double     zone_diameter = 0;
+    const auto measured =
+      measure_cells(dof_handler, u, contact_points, top, zone_diameter);
     zone_diameter = Utilities::MPI::max(zone_diameter, comm);
 
     std::vector<
@@ -193,35 +263,8 @@ namespace ContactDynamics
           m.cell->set_coarsen_flag();
       }
 
-    // the cell limit: refine the nearest cells only (a bisection on the
-    // relative distance, the same on every process)
-    const double n_cells  = tria.n_global_active_cells();
-    const auto   n_refine = [&](const double threshold) {
-      double n = 0;
-      for (const auto &r : refine)
-        n += r.first <= threshold;
-      return Utilities::MPI::sum(n, comm);
-    };
-    const double room =
-      (double(parameters.maximum_cells) - n_cells) / (kids - 1);
-    double threshold = buffer;
-    if (n_refine(threshold) > room)
-      {
-        double low = -1, high = buffer;
-        for (unsigned int i = 0; i < 50; ++i)
-          {
-            const double mid                    = 0.5 * (low + high);
-            (n_refine(mid) > room ? high : low) = mid;
-          }
-        threshold = low;
-      }
-    unsigned int dropped = 0;
-    for (const auto &r : refine)
-      if (r.first <= threshold)
-        r.second->set_refine_flag();
-      else
-        ++dropped;
-    return Utilities::MPI::sum(dropped, comm);
+    // the cell limit: refine the nearest cells only
+    return flag_within_limit<dim>(refine, tria, parameters, comm);
   }
 
   namespace

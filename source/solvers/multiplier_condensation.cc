@@ -17,7 +17,7 @@ namespace ContactDynamics
 {
   using Index = types::global_dof_index;
 
-  struct MultiplierCondensation::Elimination
+  struct internal::MultiplierElimination
   {
     Index               multiplier = 0;
     double              e          = 0;
@@ -156,6 +156,489 @@ namespace ContactDynamics
         }
       return true;
     }
+
+    using Elimination = internal::MultiplierElimination;
+
+    /** Whether the sorted list `sorted` holds `i`. */
+    bool
+    contains(const std::vector<Index> &sorted, const Index i)
+    {
+      return std::binary_search(sorted.begin(), sorted.end(), i);
+    }
+
+    /** A group that can be condensed: its displacement rows and B = Q_1 R. */
+    struct CondensableGroup
+    {
+      const MultiplierGroup           *group = nullptr;
+      std::vector<SparseRow>           rows; // of the displacements
+      std::vector<std::vector<double>> q, r;
+    };
+
+    /** Rows replaced by the condensation, with their right-hand sides. */
+    using ReplacedRows =
+      std::unordered_map<Index, std::pair<SparseRow, double>>;
+
+    /** Step 1: the groups whose block B has full column rank, with bases. */
+    std::vector<CondensableGroup>
+    condensable_groups(const Epetra_CrsMatrix             &matrix,
+                       const std::vector<MultiplierGroup> &groups)
+    {
+      std::vector<CondensableGroup> condensed;
+      for (const auto &group : groups)
+        {
+          CondensableGroup g;
+          g.group = &group;
+          for (const Index i : group.displacements)
+            g.rows.push_back(read_row(matrix, i));
+          std::vector<std::vector<double>> b(group.displacements.size(),
+                                             std::vector<double>(
+                                               group.multipliers.size()));
+          for (unsigned int d = 0; d < b.size(); ++d)
+            for (unsigned int a = 0; a < group.multipliers.size(); ++a)
+              b[d][a] = entry(g.rows[d], group.multipliers[a]);
+          if (group.multipliers.empty() ||
+              group.multipliers.size() > group.displacements.size() ||
+              !orthonormal_basis(b, g.q, g.r))
+            continue;
+          condensed.push_back(std::move(g));
+        }
+      return condensed;
+    }
+
+    /** The multipliers of the condensed groups of all processes, sorted. */
+    std::vector<Index>
+    all_condensed_multipliers(const std::vector<CondensableGroup> &condensed,
+                              const MPI_Comm                       comm)
+    {
+      std::vector<Index> condensed_multipliers;
+      for (const auto &g : condensed)
+        condensed_multipliers.insert(condensed_multipliers.end(),
+                                     g.group->multipliers.begin(),
+                                     g.group->multipliers.end());
+      std::vector<Index> all_condensed;
+      for (const auto &part :
+           Utilities::MPI::all_gather(comm, condensed_multipliers))
+        all_condensed.insert(all_condensed.end(), part.begin(), part.end());
+      std::sort(all_condensed.begin(), all_condensed.end());
+      return all_condensed;
+    }
+
+    /**
+     * Step 2: dlambda = -e - F du for each multiplier of the group, with
+     * E = R^-1 Q_1^T by back substitution of R E = Q_1^T.
+     */
+    void
+    add_eliminations(const CondensableGroup              &g,
+                     const TrilinosWrappers::MPI::Vector &rhs,
+                     const std::vector<Index>            &all_condensed,
+                     std::vector<Elimination>            &eliminations)
+    {
+      const unsigned int dim = g.rows.size(), k = g.group->multipliers.size();
+      std::vector<std::vector<double>> e(k, std::vector<double>(dim, 0.));
+      for (int a = k - 1; a >= 0; --a)
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            double value = g.q[d][a];
+            for (unsigned int c = a + 1; c < k; ++c)
+              value -= g.r[a][c] * e[c][d];
+            e[a][d] = value / g.r[a][a];
+          }
+      for (unsigned int a = 0; a < k; ++a)
+        {
+          Elimination elimination;
+          elimination.multiplier = g.group->multipliers[a];
+          SparseRow f;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              elimination.e += e[a][d] * rhs(g.group->displacements[d]);
+              for (const auto &x : g.rows[d])
+                if (!contains(all_condensed, x.first))
+                  f.emplace_back(x.first, e[a][d] * x.second);
+            }
+          compress_row(f);
+          for (const auto &x : f)
+            {
+              elimination.columns.push_back(x.first);
+              elimination.values.push_back(x.second);
+            }
+          eliminations.push_back(std::move(elimination));
+        }
+    }
+
+    /**
+     * The eliminations of all processes: every process needs those of the
+     * multipliers in its rows.
+     */
+    std::unordered_map<Index, Elimination>
+    gather_eliminations(const std::vector<Elimination> &eliminations,
+                        const MPI_Comm                  comm)
+    {
+      std::unordered_map<Index, Elimination> all_eliminations;
+      std::vector<Index>                     indices;
+      std::vector<double>                    values;
+      for (const auto &x : eliminations)
+        {
+          indices.push_back(x.multiplier);
+          indices.push_back(x.columns.size());
+          indices.insert(indices.end(), x.columns.begin(), x.columns.end());
+          values.push_back(x.e);
+          values.insert(values.end(), x.values.begin(), x.values.end());
+        }
+      const auto all_indices = Utilities::MPI::all_gather(comm, indices);
+      const auto all_values  = Utilities::MPI::all_gather(comm, values);
+      for (unsigned int p = 0; p < all_indices.size(); ++p)
+        {
+          auto i = all_indices[p].begin();
+          auto v = all_values[p].begin();
+          while (i != all_indices[p].end())
+            {
+              Elimination &x = all_eliminations[*i];
+              x.multiplier   = *i;
+              const Index n  = *(i + 1);
+              x.columns.assign(i + 2, i + 2 + n);
+              x.e = *v;
+              x.values.assign(v + 1, v + 1 + n);
+              i += 2 + n;
+              v += 1 + n;
+            }
+        }
+      return all_eliminations;
+    }
+
+    /**
+     * Rows of the matrix with the condensed multipliers substituted: in
+     * 3-D a row collects some thirty eliminations of two hundred columns
+     * each, merged in linear time in a dense accumulator over "slots" (the
+     * columns that occur) instead of sorted.
+     */
+    class Substitution
+    {
+    public:
+      Substitution(
+        const Epetra_CrsMatrix                       &matrix,
+        const std::vector<Index>                     &all_condensed,
+        const std::unordered_map<Index, Elimination> &all_eliminations)
+        : matrix(matrix)
+        , all_eliminations(all_eliminations)
+        , condensed_column(matrix.NumMyCols(), false)
+        , local_slot(matrix.NumMyCols())
+      {
+        for (int c = 0; c < matrix.NumMyCols(); ++c)
+          condensed_column[c] =
+            contains(all_condensed, static_cast<Index>(matrix.GCID(c)));
+        for (int c = 0; c < matrix.NumMyCols(); ++c)
+          local_slot[c] = slot(static_cast<Index>(matrix.GCID(c)));
+        for (const auto &[m, x] : all_eliminations)
+          {
+            auto &slots = elimination_slots[m];
+            for (const Index c : x.columns)
+              slots.push_back(slot(c));
+          }
+        sum.assign(slot_column.size(), 0.);
+        touched.assign(slot_column.size(), false);
+      }
+
+      /** Whether the local column `c` is a condensed multiplier. */
+      bool
+      is_condensed_column(const int c) const
+      {
+        return condensed_column[c];
+      }
+
+      /**
+       * The locally owned `row` with dlambda = -e - F du substituted for
+       * its condensed columns; their e terms are taken from `rhs_value`.
+       */
+      SparseRow
+      operator()(const Index row, double &rhs_value)
+      {
+        int     n       = 0;
+        double *values  = nullptr;
+        int    *indices = nullptr;
+        Assert(matrix.LRID(static_cast<int>(row)) >= 0, ExcInternalError());
+        matrix.ExtractMyRowView(matrix.LRID(static_cast<int>(row)),
+                                n,
+                                values,
+                                indices);
+        for (int k = 0; k < n; ++k)
+          if (!condensed_column[indices[k]])
+            add_to_sum(local_slot[indices[k]], values[k]);
+          else
+            {
+              const Index        m           = matrix.GCID(indices[k]);
+              const Elimination &elimination = all_eliminations.at(m);
+              const auto        &slots       = elimination_slots.at(m);
+              rhs_value -= values[k] * elimination.e;
+              for (unsigned int c = 0; c < slots.size(); ++c)
+                add_to_sum(slots[c], -values[k] * elimination.values[c]);
+            }
+        SparseRow result;
+        for (const unsigned int s : touched_slots)
+          {
+            if (sum[s] != 0)
+              result.emplace_back(slot_column[s], sum[s]);
+            sum[s]     = 0;
+            touched[s] = false;
+          }
+        touched_slots.clear();
+        return result;
+      }
+
+    private:
+      unsigned int
+      slot(const Index column)
+      {
+        const auto [it, inserted] =
+          slot_of.try_emplace(column, slot_column.size());
+        if (inserted)
+          slot_column.push_back(column);
+        return it->second;
+      }
+
+      void
+      add_to_sum(const unsigned int s, const double value)
+      {
+        if (!touched[s])
+          {
+            touched[s] = true;
+            touched_slots.push_back(s);
+          }
+        sum[s] += value;
+      }
+
+      const Epetra_CrsMatrix                              &matrix;
+      const std::unordered_map<Index, Elimination>        &all_eliminations;
+      std::vector<bool>                                    condensed_column;
+      std::unordered_map<Index, unsigned int>              slot_of;
+      std::vector<Index>                                   slot_column;
+      std::vector<unsigned int>                            local_slot;
+      std::unordered_map<Index, std::vector<unsigned int>> elimination_slots;
+      std::vector<double>                                  sum;
+      std::vector<bool>                                    touched;
+      std::vector<unsigned int>                            touched_slots;
+    };
+
+    /**
+     * The k condensed multiplier rows and the dim - k rotated displacement
+     * rows Q_2^T (J_s du + r_s) = 0 of a group, with their right-hand sides.
+     */
+    void
+    group_equations(const CondensableGroup              &g,
+                    const TrilinosWrappers::MPI::Vector &rhs,
+                    const std::vector<Index>            &all_condensed,
+                    Substitution                        &substitute,
+                    std::vector<SparseRow>              &equations,
+                    std::vector<double>                 &values)
+    {
+      const unsigned int dim = g.rows.size(), k = g.group->multipliers.size();
+      equations.assign(dim, SparseRow());
+      values.assign(dim, 0.);
+      for (unsigned int a = 0; a < k; ++a)
+        {
+          const Index m = g.group->multipliers[a];
+          values[a]     = rhs(m);
+          equations[a]  = substitute(m, values[a]);
+        }
+      for (unsigned int b = k; b < dim; ++b)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              values[b] += g.q[d][b] * rhs(g.group->displacements[d]);
+              for (const auto &x : g.rows[d])
+                if (!contains(all_condensed, x.first))
+                  equations[b].emplace_back(x.first, g.q[d][b] * x.second);
+            }
+          compress_row(equations[b]);
+        }
+    }
+
+    /**
+     * Which equation goes on which displacement row: the permutation with
+     * the largest product of the diagonals.
+     */
+    std::vector<unsigned int>
+    placement(const std::vector<SparseRow> &equations,
+              const std::vector<Index>     &displacements)
+    {
+      const unsigned int        dim = equations.size();
+      std::vector<unsigned int> order(dim), best;
+      std::iota(order.begin(), order.end(), 0);
+      double best_product = -1;
+      do
+        {
+          double product = 1;
+          for (unsigned int d = 0; d < dim; ++d)
+            product *= std::abs(entry(equations[order[d]], displacements[d]));
+          if (product > best_product)
+            {
+              best_product = product;
+              best         = order;
+            }
+      } while (std::next_permutation(order.begin(), order.end()));
+      return best;
+    }
+
+    /**
+     * Step 3: the rows of a group's displacements replaced by its
+     * equations, each on the displacement row with the largest diagonals.
+     */
+    void
+    replace_group_rows(const CondensableGroup              &g,
+                       const TrilinosWrappers::MPI::Vector &rhs,
+                       const std::vector<Index>            &all_condensed,
+                       Substitution                        &substitute,
+                       ReplacedRows                        &replaced)
+    {
+      std::vector<SparseRow> equations;
+      std::vector<double>    values;
+      group_equations(g, rhs, all_condensed, substitute, equations, values);
+      const std::vector<unsigned int> best =
+        placement(equations, g.group->displacements);
+      // each equation scaled to the diagonal of the stiffness row it
+      // replaces: the same solution, and the smoothers of an algebraic
+      // multigrid see the scale of the elasticity rows
+      for (unsigned int d = 0; d < g.rows.size(); ++d)
+        {
+          const Index  row      = g.group->displacements[d];
+          SparseRow    equation = equations[best[d]];
+          const double diagonal = entry(equation, row);
+          const double target   = std::abs(entry(g.rows[d], row));
+          const double factor =
+            (diagonal != 0 && target > 0) ? target / diagonal : 1.;
+          for (auto &x : equation)
+            x.second *= factor;
+          replaced[row] = {std::move(equation), factor * values[best[d]]};
+        }
+    }
+
+    /**
+     * Step 4: the other rows that change: the condensed multipliers' rows
+     * (identity rows) and every row with a condensed column.
+     */
+    void
+    replace_other_rows(const Epetra_CrsMatrix              &matrix,
+                       const TrilinosWrappers::MPI::Vector &rhs,
+                       const std::vector<Index>            &all_condensed,
+                       Substitution                        &substitute,
+                       ReplacedRows                        &replaced)
+    {
+      std::vector<Index> affected;
+      for (int r = 0; r < matrix.NumMyRows(); ++r)
+        {
+          const Index row = matrix.GRID(r);
+          if (replaced.count(row) > 0)
+            continue;
+          int     n       = 0;
+          double *values  = nullptr;
+          int    *indices = nullptr;
+          matrix.ExtractMyRowView(r, n, values, indices);
+          bool changes = contains(all_condensed, row);
+          for (int k = 0; k < n && !changes; ++k)
+            changes = substitute.is_condensed_column(indices[k]);
+          if (changes)
+            affected.push_back(row);
+        }
+      for (const Index row : affected)
+        {
+          double    value = rhs(row);
+          SparseRow new_row;
+          if (contains(all_condensed, row))
+            {
+              new_row = {{row, 1.}};
+              value   = 0;
+            }
+          else
+            new_row = substitute(row, value);
+          replaced[row] = {std::move(new_row), value};
+        }
+    }
+
+    /**
+     * Whether every process may copy the Jacobian and rewrite the replaced
+     * rows: with `copy_jacobian` and the fill-in in its pattern
+     * (add_fill_in). Collective.
+     */
+    bool
+    fits_pattern(const Epetra_CrsMatrix &matrix,
+                 const ReplacedRows     &replaced,
+                 const bool              copy_jacobian,
+                 const MPI_Comm          comm)
+    {
+      bool fits = copy_jacobian;
+      for (const auto &r : replaced)
+        {
+          const SparseRow    existing = read_row(matrix, r.first);
+          std::vector<Index> columns;
+          for (const auto &x : existing)
+            columns.push_back(x.first);
+          std::sort(columns.begin(), columns.end());
+          for (const auto &x : r.second.first)
+            fits = fits &&
+                   std::binary_search(columns.begin(), columns.end(), x.first);
+          if (!fits)
+            break;
+        }
+      return Utilities::MPI::min(fits ? 1 : 0, comm) == 1;
+    }
+
+    /** Sets the entries of a row (within the matrix's pattern). */
+    void
+    set_row(TrilinosWrappers::SparseMatrix &matrix,
+            const Index                     row,
+            const SparseRow                &entries)
+    {
+      std::vector<TrilinosWrappers::SparseMatrix::size_type> columns;
+      std::vector<TrilinosScalar>                            values;
+      for (const auto &x : entries)
+        {
+          columns.push_back(x.first);
+          values.push_back(x.second);
+        }
+      matrix.set(row, columns, values, false);
+    }
+
+    /** The condensed matrix as a copy of the Jacobian, rows rewritten. */
+    void
+    copy_with_rows(TrilinosWrappers::SparseMatrix       &condensed,
+                   const TrilinosWrappers::SparseMatrix &jacobian,
+                   const ReplacedRows                   &replaced)
+    {
+      condensed.copy_from(jacobian);
+      for (const auto &r : replaced)
+        {
+          condensed.clear_row(r.first);
+          set_row(condensed, r.first, r.second.first);
+        }
+      condensed.compress(VectorOperation::insert);
+    }
+
+    /** The condensed matrix with a pattern of its own. */
+    void
+    build_with_rows(TrilinosWrappers::SparseMatrix &condensed,
+                    const Epetra_CrsMatrix         &matrix,
+                    const ReplacedRows             &replaced,
+                    const IndexSet                 &owned,
+                    const MPI_Comm                  comm)
+    {
+      DynamicSparsityPattern dsp(owned.size(), owned.size(), owned);
+      std::vector<SparseRow> rows;
+      std::vector<Index>     row_indices;
+      for (const Index i : owned)
+        {
+          const auto it = replaced.find(i);
+          SparseRow  row =
+            it != replaced.end() ? it->second.first : read_row(matrix, i);
+          for (const auto &x : row)
+            dsp.add(i, x.first);
+          dsp.add(i, i);
+          rows.push_back(std::move(row));
+          row_indices.push_back(i);
+        }
+      condensed.reinit(owned, owned, dsp, comm);
+      for (unsigned int r = 0; r < rows.size(); ++r)
+        set_row(condensed, row_indices[r], rows[r]);
+      condensed.compress(VectorOperation::insert);
+    }
   } // namespace
 
   MultiplierCondensation::MultiplierCondensation()
@@ -189,292 +672,27 @@ namespace ContactDynamics
     const MPI_Comm          comm   = rhs.get_mpi_communicator();
 
     // 1. which groups can be condensed, with their bases
-    struct GroupElimination
-    {
-      const MultiplierGroup           *group = nullptr;
-      std::vector<SparseRow>           rows; // of the displacements
-      std::vector<std::vector<double>> q, r;
-    };
-    std::vector<GroupElimination> condensed;
-    std::vector<Index>            condensed_multipliers;
-    for (const auto &group : groups)
-      {
-        GroupElimination g;
-        g.group = &group;
-        for (const Index i : group.displacements)
-          g.rows.push_back(read_row(matrix, i));
-        std::vector<std::vector<double>> b(group.displacements.size(),
-                                           std::vector<double>(
-                                             group.multipliers.size()));
-        for (unsigned int d = 0; d < b.size(); ++d)
-          for (unsigned int a = 0; a < group.multipliers.size(); ++a)
-            b[d][a] = entry(g.rows[d], group.multipliers[a]);
-        if (group.multipliers.empty() ||
-            group.multipliers.size() > group.displacements.size() ||
-            !orthonormal_basis(b, g.q, g.r))
-          continue;
-        condensed_multipliers.insert(condensed_multipliers.end(),
-                                     group.multipliers.begin(),
-                                     group.multipliers.end());
-        condensed.push_back(std::move(g));
-      }
-    std::vector<Index> all_condensed;
-    for (const auto &part :
-         Utilities::MPI::all_gather(comm, condensed_multipliers))
-      all_condensed.insert(all_condensed.end(), part.begin(), part.end());
-    std::sort(all_condensed.begin(), all_condensed.end());
+    const std::vector<CondensableGroup> condensed =
+      condensable_groups(matrix, groups);
+    const std::vector<Index> all_condensed =
+      all_condensed_multipliers(condensed, comm);
     n_condensed_multipliers = all_condensed.size();
-    const auto is_condensed = [&](const Index i) {
-      return std::binary_search(all_condensed.begin(), all_condensed.end(), i);
-    };
 
     // 2. dlambda = -e - F du per condensed multiplier: E = R^-1 Q_1^T
     eliminations.clear();
     for (const auto &g : condensed)
-      {
-        const unsigned int dim = g.rows.size(), k = g.group->multipliers.size();
-        // E, by back substitution of R E = Q_1^T
-        std::vector<std::vector<double>> e(k, std::vector<double>(dim, 0.));
-        for (int a = k - 1; a >= 0; --a)
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              double value = g.q[d][a];
-              for (unsigned int c = a + 1; c < k; ++c)
-                value -= g.r[a][c] * e[c][d];
-              e[a][d] = value / g.r[a][a];
-            }
-        for (unsigned int a = 0; a < k; ++a)
-          {
-            Elimination elimination;
-            elimination.multiplier = g.group->multipliers[a];
-            SparseRow f;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                elimination.e += e[a][d] * rhs(g.group->displacements[d]);
-                for (const auto &x : g.rows[d])
-                  if (!is_condensed(x.first))
-                    f.emplace_back(x.first, e[a][d] * x.second);
-              }
-            compress_row(f);
-            for (const auto &x : f)
-              {
-                elimination.columns.push_back(x.first);
-                elimination.values.push_back(x.second);
-              }
-            eliminations.push_back(std::move(elimination));
-          }
-      }
+      add_eliminations(g, rhs, all_condensed, eliminations);
+    const std::unordered_map<Index, Elimination> all_eliminations =
+      gather_eliminations(eliminations, comm);
+    Substitution substitute(matrix, all_condensed, all_eliminations);
 
-    // every process needs the eliminations of the multipliers in its rows
-    std::unordered_map<Index, Elimination> all_eliminations;
-    {
-      std::vector<Index>  indices;
-      std::vector<double> values;
-      for (const auto &x : eliminations)
-        {
-          indices.push_back(x.multiplier);
-          indices.push_back(x.columns.size());
-          indices.insert(indices.end(), x.columns.begin(), x.columns.end());
-          values.push_back(x.e);
-          values.insert(values.end(), x.values.begin(), x.values.end());
-        }
-      const auto all_indices = Utilities::MPI::all_gather(comm, indices);
-      const auto all_values  = Utilities::MPI::all_gather(comm, values);
-      for (unsigned int p = 0; p < all_indices.size(); ++p)
-        {
-          auto i = all_indices[p].begin();
-          auto v = all_values[p].begin();
-          while (i != all_indices[p].end())
-            {
-              Elimination &x = all_eliminations[*i];
-              x.multiplier   = *i;
-              const Index n  = *(i + 1);
-              x.columns.assign(i + 2, i + 2 + n);
-              x.e = *v;
-              x.values.assign(v + 1, v + 1 + n);
-              i += 2 + n;
-              v += 1 + n;
-            }
-        }
-    }
-
-    std::vector<bool> condensed_column(matrix.NumMyCols(), false);
-    for (int c = 0; c < matrix.NumMyCols(); ++c)
-      condensed_column[c] = is_condensed(static_cast<Index>(matrix.GCID(c)));
-    // a row of the matrix with the condensed multipliers substituted: in
-    // 3-D a row collects some thirty eliminations of two hundred columns
-    // each, merged in linear time in a dense accumulator over "slots" (the
-    // columns that occur) instead of sorted
-    std::unordered_map<Index, unsigned int> slot_of;
-    std::vector<Index>                      slot_column;
-    const auto                              slot = [&](const Index column) {
-      const auto [it, inserted] =
-        slot_of.try_emplace(column, slot_column.size());
-      if (inserted)
-        slot_column.push_back(column);
-      return it->second;
-    };
-    std::vector<unsigned int> local_slot(matrix.NumMyCols());
-    for (int c = 0; c < matrix.NumMyCols(); ++c)
-      local_slot[c] = slot(static_cast<Index>(matrix.GCID(c)));
-    std::unordered_map<Index, std::vector<unsigned int>> elimination_slots;
-    for (const auto &[m, x] : all_eliminations)
-      {
-        auto &slots = elimination_slots[m];
-        for (const Index c : x.columns)
-          slots.push_back(slot(c));
-      }
-    std::vector<double>       sum(slot_column.size(), 0.);
-    std::vector<bool>         touched(slot_column.size(), false);
-    std::vector<unsigned int> touched_slots;
-    const auto add_to_sum = [&](const unsigned int s, const double value) {
-      if (!touched[s])
-        {
-          touched[s] = true;
-          touched_slots.push_back(s);
-        }
-      sum[s] += value;
-    };
-    const auto substitute = [&](const Index row, double &rhs_value) {
-      int     n       = 0;
-      double *values  = nullptr;
-      int    *indices = nullptr;
-      Assert(matrix.LRID(static_cast<int>(row)) >= 0, ExcInternalError());
-      matrix.ExtractMyRowView(matrix.LRID(static_cast<int>(row)),
-                              n,
-                              values,
-                              indices);
-      for (int k = 0; k < n; ++k)
-        if (!condensed_column[indices[k]])
-          add_to_sum(local_slot[indices[k]], values[k]);
-        else
-          {
-            const Index        m           = matrix.GCID(indices[k]);
-            const Elimination &elimination = all_eliminations.at(m);
-            const auto        &slots       = elimination_slots.at(m);
-            rhs_value -= values[k] * elimination.e;
-            for (unsigned int c = 0; c < slots.size(); ++c)
-              add_to_sum(slots[c], -values[k] * elimination.values[c]);
-          }
-      SparseRow result;
-      for (const unsigned int s : touched_slots)
-        {
-          if (sum[s] != 0)
-            result.emplace_back(slot_column[s], sum[s]);
-          sum[s]     = 0;
-          touched[s] = false;
-        }
-      touched_slots.clear();
-      return result;
-    };
-
-    // 3. the condensed rows
-    std::unordered_map<Index, std::pair<SparseRow, double>> replaced;
+    // 3. the condensed rows, 4. the other rows that change
+    ReplacedRows replaced;
     for (const auto &g : condensed)
-      {
-        const unsigned int dim = g.rows.size(), k = g.group->multipliers.size();
-        std::vector<SparseRow> equations(dim);
-        std::vector<double>    values(dim, 0.);
-        for (unsigned int a = 0; a < k; ++a)
-          {
-            const Index m = g.group->multipliers[a];
-            values[a]     = rhs(m);
-            equations[a]  = substitute(m, values[a]);
-          }
-        for (unsigned int b = k; b < dim; ++b)
-          {
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                values[b] += g.q[d][b] * rhs(g.group->displacements[d]);
-                for (const auto &x : g.rows[d])
-                  if (!is_condensed(x.first))
-                    equations[b].emplace_back(x.first, g.q[d][b] * x.second);
-              }
-            compress_row(equations[b]);
-          }
-        // the equations on the displacement rows with the largest
-        // diagonals
-        std::vector<unsigned int> order(dim), best;
-        std::iota(order.begin(), order.end(), 0);
-        double best_product = -1;
-        do
-          {
-            double product = 1;
-            for (unsigned int d = 0; d < dim; ++d)
-              product *=
-                std::abs(entry(equations[order[d]], g.group->displacements[d]));
-            if (product > best_product)
-              {
-                best_product = product;
-                best         = order;
-              }
-        } while (std::next_permutation(order.begin(), order.end()));
-        // each equation scaled to the diagonal of the stiffness row it
-        // replaces: the same solution, and the smoothers of an algebraic
-        // multigrid see the scale of the elasticity rows
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const Index  row      = g.group->displacements[d];
-            SparseRow    equation = equations[best[d]];
-            const double diagonal = entry(equation, row);
-            const double target   = std::abs(entry(g.rows[d], row));
-            const double factor =
-              (diagonal != 0 && target > 0) ? target / diagonal : 1.;
-            for (auto &x : equation)
-              x.second *= factor;
-            replaced[row] = {std::move(equation), factor * values[best[d]]};
-          }
-      }
+      replace_group_rows(g, rhs, all_condensed, substitute, replaced);
+    replace_other_rows(matrix, rhs, all_condensed, substitute, replaced);
 
-    // the rows that change: the groups' displacement rows (above), the
-    // condensed multipliers' rows, and every row with a condensed column
-    std::vector<Index> affected;
-    for (int r = 0; r < matrix.NumMyRows(); ++r)
-      {
-        const Index row = matrix.GRID(r);
-        if (replaced.count(row) > 0)
-          continue;
-        int     n       = 0;
-        double *values  = nullptr;
-        int    *indices = nullptr;
-        matrix.ExtractMyRowView(r, n, values, indices);
-        bool changes = is_condensed(row);
-        for (int k = 0; k < n && !changes; ++k)
-          changes = condensed_column[indices[k]];
-        if (changes)
-          affected.push_back(row);
-      }
-    for (const Index row : affected)
-      {
-        double    value = rhs(row);
-        SparseRow new_row;
-        if (is_condensed(row))
-          {
-            new_row = {{row, 1.}};
-            value   = 0;
-          }
-        else
-          new_row = substitute(row, value);
-        replaced[row] = {std::move(new_row), value};
-      }
-
-    // with the fill-in in the Jacobian's pattern (add_fill_in), a copy of
-    // the Jacobian with these rows rewritten; else a new matrix
-    bool fits = copy_jacobian;
-    for (const auto &r : replaced)
-      {
-        const SparseRow    existing = read_row(matrix, r.first);
-        std::vector<Index> columns;
-        for (const auto &x : existing)
-          columns.push_back(x.first);
-        std::sort(columns.begin(), columns.end());
-        for (const auto &x : r.second.first)
-          fits =
-            fits && std::binary_search(columns.begin(), columns.end(), x.first);
-        if (!fits)
-          break;
-      }
-    fits = Utilities::MPI::min(fits ? 1 : 0, comm) == 1;
+    const bool fits = fits_pattern(matrix, replaced, copy_jacobian, comm);
 
     TrilinosWrappers::MPI::Vector &b = *condensed_rhs;
     b.reinit(rhs);
@@ -483,114 +701,12 @@ namespace ContactDynamics
       b(r.first) = r.second.second;
     b.compress(VectorOperation::insert);
 
-    std::vector<TrilinosWrappers::SparseMatrix::size_type> columns;
-    std::vector<TrilinosScalar>                            values;
-    const auto set_row = [&](const Index row, const SparseRow &entries) {
-      columns.clear();
-      values.clear();
-      for (const auto &x : entries)
-        {
-          columns.push_back(x.first);
-          values.push_back(x.second);
-        }
-      condensed_matrix->set(row, columns, values, false);
-    };
+    // with the fill-in in the Jacobian's pattern (add_fill_in), a copy of
+    // the Jacobian with these rows rewritten; else a new matrix
     if (fits)
-      {
-        condensed_matrix->copy_from(jacobian);
-        for (const auto &r : replaced)
-          {
-            condensed_matrix->clear_row(r.first);
-            set_row(r.first, r.second.first);
-          }
-        condensed_matrix->compress(VectorOperation::insert);
-        return;
-      }
-
-    DynamicSparsityPattern dsp(rhs.size(), rhs.size(), owned);
-    std::vector<SparseRow> rows;
-    std::vector<Index>     row_indices;
-    for (const Index i : owned)
-      {
-        const auto it = replaced.find(i);
-        SparseRow  row =
-          it != replaced.end() ? it->second.first : read_row(matrix, i);
-        for (const auto &x : row)
-          dsp.add(i, x.first);
-        dsp.add(i, i);
-        rows.push_back(std::move(row));
-        row_indices.push_back(i);
-      }
-    condensed_matrix->reinit(owned, owned, dsp, comm);
-    for (unsigned int r = 0; r < rows.size(); ++r)
-      set_row(row_indices[r], rows[r]);
-    condensed_matrix->compress(VectorOperation::insert);
-  }
-
-  std::vector<MultiplierCondensation::FillIn>
-  MultiplierCondensation::fill_in(const DynamicSparsityPattern       &pattern,
-                                  const std::vector<MultiplierGroup> &groups)
-  {
-    const auto columns_of = [&](const Index row) {
-      std::vector<Index> columns;
-      for (auto it = pattern.begin(row); it != pattern.end(row); ++it)
-        columns.push_back(it->column());
-      return columns;
-    };
-    const auto sorted = [](std::vector<Index> v) {
-      std::sort(v.begin(), v.end());
-      v.erase(std::unique(v.begin(), v.end()), v.end());
-      return v;
-    };
-    // the condensation substitutes once, with the Jacobian's own rows:
-    // the fill comes from the pattern without any of it (adding it group
-    // by group would spread it along the surface)
-    std::vector<FillIn> additions;
-    for (const auto &group : groups)
-      {
-        // dlambda = -e - F du with F = E J_s, the group's displacement rows
-        std::vector<Index> displacement_columns, multiplier_columns;
-        for (const Index i : group.displacements)
-          {
-            const auto c = columns_of(i);
-            displacement_columns.insert(displacement_columns.end(),
-                                        c.begin(),
-                                        c.end());
-          }
-        for (const Index m : group.multipliers)
-          {
-            const auto c = columns_of(m);
-            multiplier_columns.insert(multiplier_columns.end(),
-                                      c.begin(),
-                                      c.end());
-          }
-        // a row with a multiplier column (by the pattern's symmetry, a
-        // column of the multiplier's row) gets the columns of F; the
-        // group's own rows take the multiplier rows and Q_2^T J_s
-        std::vector<Index> own = displacement_columns;
-        own.insert(own.end(),
-                   multiplier_columns.begin(),
-                   multiplier_columns.end());
-        additions.push_back(
-          {sorted(multiplier_columns), sorted(displacement_columns)});
-        additions.push_back({group.displacements, sorted(own)});
-      }
-    return additions;
-  }
-
-  void
-  MultiplierCondensation::add_fill_in(
-    DynamicSparsityPattern             &dsp,
-    const std::vector<MultiplierGroup> &groups)
-  {
-    for (const auto &addition : fill_in(dsp, groups))
-      for (const Index r : addition.rows)
-        if (dsp.row_index_set().size() == 0 ||
-            dsp.row_index_set().is_element(r))
-          dsp.add_entries(r,
-                          addition.columns.begin(),
-                          addition.columns.end(),
-                          true);
+      copy_with_rows(*condensed_matrix, jacobian, replaced);
+    else
+      build_with_rows(*condensed_matrix, matrix, replaced, owned, comm);
   }
 
   void

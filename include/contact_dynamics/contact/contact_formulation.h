@@ -1,5 +1,5 @@
-// The interface every contact formulation implements, and the parameters
-// of the `Contact` subsection that all formulations share.
+// The interface every contact formulation implements (its parameters and
+// the states it reports are in contact_parameters.h and contact_states.h).
 #ifndef contact_dynamics_contact_contact_formulation_h
 #define contact_dynamics_contact_contact_formulation_h
 
@@ -13,9 +13,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <contact_dynamics/contact/rigid_obstacle.h>
-#include <contact_dynamics/mechanics/time_integrator.h>
-#include <contact_dynamics/scenes/scene_layout.h>
+#include <contact_dynamics/contact/contact_parameters.h>
+#include <contact_dynamics/contact/contact_states.h>
 #include <contact_dynamics/solvers/multiplier_condensation.h>
 
 #include <array>
@@ -26,95 +25,7 @@
 namespace ContactDynamics
 {
   using namespace dealii;
-  using VectorType = TrilinosWrappers::MPI::Vector;
-  using MatrixType = TrilinosWrappers::SparseMatrix;
   class CheckpointData;
-
-  /** One secondary/primary surface pair; a side may join several surfaces. */
-  struct ContactPair
-  {
-    std::vector<types::boundary_id> secondary;
-    std::vector<types::boundary_id> primary;
-    std::string                     name; // "secondary: primary" as written
-    double                          friction_coefficient = 0;
-    // the index of the rigid obstacle that is the primary side (`primary`
-    // is empty then), or -1
-    int obstacle = -1;
-  };
-
-  struct ContactParameters
-  {
-    enum class Formulation
-    {
-      none,
-      mortar,
-      node_to_segment
-    };
-    Formulation              formulation = Formulation::none;
-    std::vector<ContactPair> pairs;
-    // 'x, y' or 'x, y, z' (create_contact_formulation() checks the count)
-    std::vector<std::vector<double>> monitored_points;
-    bool                             allow_initial_penetration = false;
-    std::vector<std::string>         body_names; // of the scene, for messages
-    std::vector<RigidObstacleParameters> obstacles;
-
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler  &prm,
-                     const SceneLayout &layout,
-                     const unsigned int dim);
-  };
-
-  /** What the time integrator tells a formulation about the trial state. */
-  struct TrialState
-  {
-    const VectorType     &u;       // displacement (and multipliers) at t_{n+1}
-    const VectorType     &v;       // Newmark velocity at t_{n+1}
-    double                c_v;     // d v / d u
-    double                dt;      // time step size
-    bool                  dynamic; // false for quasi-static
-    const TimeIntegrator &integrator; // for the rates of nodal quantities
-  };
-
-  /** The state of a secondary node after an assembly. */
-  struct ContactNodeState
-  {
-    double gap      = 0; // weighted (mortar) or pointwise gap
-    double weight   = 0; // its normalization; 0: no projection
-    double pressure = 0; // lambda_n
-    // lambda_t (friction) and the normalized relative tangential velocity
-    // along the node's tangents (one in 2-D, two in 3-D)
-    std::array<double, 2> tangential = {{0., 0.}};
-    std::array<double, 2> slip_rate  = {{0., 0.}};
-    bool                  projected  = false;
-    bool                  active     = false;
-    bool                  stick      = false; // active and sticking (friction)
-    bool persistent = false; // holds its gap (rate) in the next step
-    // the normalized gap's Newmark rate and second rate at this state, and
-    // the normalized gap with its rates at the last committed step
-    double gap_rate = 0, gap_acceleration = 0;
-    // the velocity-level rate -int psi (v_s - v_p).n / w at this state
-    double velocity_rate = 0;
-    double held_gap = 0, held_rate = 0, held_acceleration = 0;
-
-    /** The gap in length units. */
-    double
-    normalized_gap() const
-    {
-      return projected ? gap / weight : 0.;
-    }
-  };
-
-  /** The secondary nodes of a contact pair, for the output. */
-  template <int dim>
-  struct SecondaryNodes
-  {
-    const std::vector<Point<dim>> &reference;
-    // at the last committed step (the reference ones before the first)
-    const std::vector<Point<dim>>       &position;
-    const std::vector<ContactNodeState> &states;
-  };
 
   template <int dim>
   class ContactFormulation
@@ -436,26 +347,6 @@ namespace ContactDynamics
     const std::vector<std::array<const ContactSurface<dim> *, 2>> &surfaces,
     const double              capture_tolerance,
     const Triangulation<dim> &triangulation);
-
-  /**
-   * Declares `Contact/Rigid obstacles` only: the first reading of a file
-   * learns the obstacles' names from it, to declare their subsections.
-   */
-  void
-  declare_obstacle_names(ParameterHandler &prm);
-
-  /** The names in `Contact/Rigid obstacles` (checked). */
-  std::vector<std::string>
-  obstacle_names(ParameterHandler &prm);
-
-  /**
-   * Declares the `Contact` subsection with every formulation's entries and
-   * a subsection per rigid obstacle of `layout`.
-   */
-  void
-  declare_contact_parameters(ParameterHandler  &prm,
-                             const SceneLayout &layout,
-                             const unsigned int dim);
 } // namespace ContactDynamics
 
 #endif

@@ -19,6 +19,12 @@ namespace ContactDynamics
 {
   using namespace dealii;
 
+  namespace internal
+  {
+    /** dlambda_m = -e - F du of one condensed multiplier (in the source). */
+    struct MultiplierElimination;
+  } // namespace internal
+
   /**
    * The unknowns of one secondary node owned by this process: its
    * displacement dofs and the multipliers (normal, tangential) that are
@@ -112,12 +118,11 @@ namespace ContactDynamics
     }
 
   private:
-    struct Elimination;
     std::unique_ptr<TrilinosWrappers::SparseMatrix> condensed_matrix;
     std::unique_ptr<TrilinosWrappers::MPI::Vector>  condensed_rhs;
     // dlambda_m = -e_m - F_m du for the owned condensed multipliers
-    std::vector<Elimination> eliminations;
-    unsigned int             n_condensed_multipliers = 0;
+    std::vector<internal::MultiplierElimination> eliminations;
+    unsigned int                                 n_condensed_multipliers = 0;
   };
 } // namespace ContactDynamics
 
