@@ -168,4 +168,47 @@ namespace ContactDynamics
     result.compress();
     return result;
   }
+  void
+  send_messages(const MPI_Comm                                comm,
+                const std::map<unsigned int, Message>        &outgoing,
+                const std::function<void(Message &received)> &read)
+  {
+    std::map<unsigned int, std::vector<double>> buffers;
+    for (const auto &[rank, message] : outgoing)
+      buffers[rank] = message.buffer();
+    for (auto &[rank, data] : Utilities::MPI::some_to_some(comm, buffers))
+      {
+        Message received(std::move(data));
+        read(received);
+      }
+  }
+
+  void
+  gather_messages(const MPI_Comm                                comm,
+                  const Message                                &mine,
+                  const std::function<void(Message &received)> &read)
+  {
+    for (auto &data : Utilities::MPI::all_gather(comm, mine.buffer()))
+      {
+        Message received(std::move(data));
+        read(received);
+      }
+  }
+
+  void
+  ProcessSums::sum(const MPI_Comm comm)
+  {
+    std::vector<double> sums(values.size());
+    for (std::size_t k = 0; k < values.size(); ++k)
+      if (values[k] != nullptr)
+        sums[k] = *values[k];
+    for (const auto &[k, n] : counts)
+      sums[k] = double(*n);
+    Utilities::MPI::sum(sums, comm, sums);
+    for (std::size_t k = 0; k < values.size(); ++k)
+      if (values[k] != nullptr)
+        *values[k] = sums[k];
+    for (const auto &[k, n] : counts)
+      *n = std::lround(sums[k]);
+  }
 } // namespace ContactDynamics

@@ -8,8 +8,13 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
 
+#include <cmath>
+#include <cstdint>
 #include <functional>
+#include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 DEAL_II_NAMESPACE_OPEN
 class ParameterHandler;
@@ -127,6 +132,157 @@ namespace ContactDynamics
   {
     return Utilities::MPI::this_mpi_process(comm) == 0;
   }
+
+  /**
+   * A message between processes as one buffer of doubles: values, indices
+   * and counts (exact as doubles below 2^53) written in order and read back
+   * in the same order. The contact classes send sums to the owners of
+   * nodes with it and gather lists from every process.
+   */
+  class Message
+  {
+  public:
+    Message() = default;
+
+    explicit Message(std::vector<double> data)
+      : data(std::move(data))
+    {}
+
+    void
+    write(const double x)
+    {
+      data.push_back(x);
+    }
+
+    /** An index or a count. */
+    void
+    write_index(const std::uint64_t i)
+    {
+      data.push_back(double(i));
+    }
+
+    /** A sparse map index -> value: its size, then the pairs. */
+    template <typename Map>
+    void
+    write_sparse(const Map &map)
+    {
+      write_index(map.size());
+      for (const auto &[i, x] : map)
+        {
+          write_index(i);
+          write(x);
+        }
+    }
+
+    /** A list of indices: its size, then the indices. */
+    template <typename List>
+    void
+    write_list(const List &list)
+    {
+      write_index(list.size());
+      for (const auto i : list)
+        write_index(i);
+    }
+
+    bool
+    at_end() const
+    {
+      return position == data.size();
+    }
+
+    double
+    read()
+    {
+      return data[position++];
+    }
+
+    std::uint64_t
+    read_index()
+    {
+      return std::llround(read());
+    }
+
+    /** Adds the pairs of a write_sparse() to `map`. */
+    template <typename Map>
+    void
+    add_sparse(Map &map)
+    {
+      const std::uint64_t n = read_index();
+      for (std::uint64_t k = 0; k < n; ++k)
+        {
+          const auto i = read_index();
+          map[i] += read();
+        }
+    }
+
+    /** The buffer (for a checkpoint entry). */
+    const std::vector<double> &
+    buffer() const
+    {
+      return data;
+    }
+
+  private:
+    std::vector<double> data;
+    std::size_t         position = 0;
+  };
+
+  /**
+   * Sends outgoing[rank] to each rank and reads the messages received, in
+   * the order of the ranks that sent them (collective).
+   */
+  void
+  send_messages(const MPI_Comm                                comm,
+                const std::map<unsigned int, Message>        &outgoing,
+                const std::function<void(Message &received)> &read);
+
+  /**
+   * Every process's message, read on every process in the order of the
+   * ranks (collective).
+   */
+  void
+  gather_messages(const MPI_Comm                                comm,
+                  const Message                                &mine,
+                  const std::function<void(Message &received)> &read);
+
+  /**
+   * Values of this process that become their sums over all processes, in
+   * one reduction: add() them, then sum().
+   */
+  class ProcessSums
+  {
+  public:
+    void
+    add(double &x)
+    {
+      values.push_back(&x);
+    }
+
+    /** A count (exact as a double). */
+    void
+    add(unsigned int &n)
+    {
+      counts.emplace_back(values.size(), &n);
+      values.push_back(nullptr);
+    }
+
+    /** Every component of a tensor. */
+    template <typename TensorType>
+    void
+    add_all(TensorType &t)
+    {
+      for (double *x = t.begin_raw(); x != t.end_raw(); ++x)
+        add(*x);
+    }
+
+    /** Replaces each value by its sum over the processes (collective). */
+    void
+    sum(const MPI_Comm comm);
+
+  private:
+    std::vector<double *>                               values;
+    std::vector<std::pair<std::size_t, unsigned int *>> counts;
+  };
 } // namespace ContactDynamics
 
 #endif

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <contact_dynamics/contact/contact_work.h>
+#include <contact_dynamics/output/checkpoint.h>
 
 namespace ContactDynamics
 {
@@ -20,9 +21,7 @@ namespace ContactDynamics
                     &friction_force_committed,
                     &mean_normal_force})
       v->reinit(owned_dofs, comm);
-    contact_work           = 0;
-    frictional_dissipation = 0;
-    last_normal_work       = 0;
+    last_normal_work = 0;
   }
 
   void
@@ -75,4 +74,17 @@ namespace ContactDynamics
     force_committed = force;
   }
 
+  void
+  ContactWork::save(CheckpointData &data, const ContactHistoryContext &) const
+  {
+    data.set("contact/work", {contact_work, frictional_dissipation});
+  }
+
+  void
+  ContactWork::load(const CheckpointData &data, const ContactHistoryContext &)
+  {
+    const auto &totals     = data.get("contact/work", 2);
+    contact_work           = totals[0];
+    frictional_dissipation = totals[1];
+  }
 } // namespace ContactDynamics

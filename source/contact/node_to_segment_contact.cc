@@ -47,7 +47,14 @@ namespace ContactDynamics
     const NodeToSegmentParameters &parameters)
     : SurfaceContact<dim>(contact, parameters.complementarity)
     , smoothing_distance(parameters.smoothing_distance)
-  {}
+    , face_memory(this->comm,
+                  [this]() {
+                    return this->n_pairs();
+                  })
+    , trial_face(face_memory.trial)
+  {
+    this->history.add(face_memory);
+  }
 
   template <int dim>
   std::set<unsigned int>
@@ -311,8 +318,7 @@ namespace ContactDynamics
     const AD lambda_t = variables.multiplier();
 
     // closest point projection
-    const std::ptrdiff_t pair_index = &pair - this->pairs.data();
-    auto                &current    = trial_face[pair_index];
+    auto &current = face_memory.trial_faces(pair.index);
     current.resize(s.n_nodes(), ContactSurface<dim>::invalid);
     double             best_eta = 0;
     const unsigned int best =
@@ -379,60 +385,27 @@ namespace ContactDynamics
       }
   }
 
-  template <int dim>
   void
-  NodeToSegmentContact<dim>::start_step()
+  FaceMemory::save(CheckpointData &data, const ContactHistoryContext &) const
   {
-    trial_face = committed_face;
-  }
-
-  template <int dim>
-  void
-  NodeToSegmentContact<dim>::remesh(const DoFHandler<dim> &dof_handler)
-  {
-    SurfaceContact<dim>::remesh(dof_handler);
-    committed_face.clear();
-    trial_face.clear();
-  }
-
-  template <int dim>
-  void
-  NodeToSegmentContact<dim>::commit_step(const VectorType &u,
-                                         const VectorType &old_u)
-  {
-    SurfaceContact<dim>::commit_step(u, old_u);
-    // the faces of the converged state's projections (the last assembly)
-    committed_face = trial_face;
-  }
-
-  template <int dim>
-  void
-  NodeToSegmentContact<dim>::save_history(CheckpointData &data) const
-  {
-    SurfaceContact<dim>::save_history(data);
-    std::vector<std::vector<unsigned int>> faces(this->pairs.size());
-    for (const auto &[p, nodes] : committed_face)
+    std::vector<std::vector<unsigned int>> faces(n_pairs());
+    for (const auto &[p, nodes] : committed)
       faces[p] = nodes;
-    this->save_per_process(data, "contact/faces", faces);
+    save_per_process(comm, data, "contact/faces", faces);
   }
 
-  template <int dim>
   void
-  NodeToSegmentContact<dim>::load_history(const CheckpointData &data,
-                                          const VectorType     &u)
+  FaceMemory::load(const CheckpointData        &data,
+                   const ContactHistoryContext &context)
   {
-    SurfaceContact<dim>::load_history(data, u);
-    committed_face.clear();
+    committed.clear();
     // on another numbering the faces are searched anew
-    const auto maps = this->saved_node_map(data);
-    if (std::all_of(maps.begin(), maps.end(), [](const auto &m) {
-          return m.empty();
-        }))
+    if (context.same_numbering())
       {
-        const auto faces = this->load_per_process(data, "contact/faces");
+        const auto faces = load_per_process(comm, data, "contact/faces");
         for (unsigned int p = 0; p < faces.size(); ++p)
           if (!faces[p].empty())
-            committed_face[p] = faces[p];
+            committed[p] = faces[p];
       }
   }
 

@@ -1,6 +1,6 @@
 // The work of the contact forces on the bodies and its frictional part,
 // trapezoidal in time: the forces of the trial state (the last assembly)
-// and of the last committed step.
+// and of the last committed step. It owns that history (history.h).
 #ifndef contact_dynamics_contact_contact_work_h
 #define contact_dynamics_contact_contact_work_h
 
@@ -8,35 +8,29 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <contact_dynamics/contact/contact_history.h>
+
+#include <string>
 #include <vector>
 
 namespace ContactDynamics
 {
   using namespace dealii;
 
-  class ContactWork
+  class ContactWork : public ContactHistoryOwner
   {
   public:
     /**
-     * No forces and no work yet. `dofs`: the displacement degrees of
+     * No forces yet, on a new mesh. `dofs`: the displacement degrees of
      * freedom of the contact surfaces (in any order of processes, sorted).
+     * The work and dissipation done so far are kept (on a mesh change they
+     * carry over; a new object starts from none).
      */
     void
     reinit(const IndexSet                             &owned_dofs,
            const MPI_Comm                              comm,
            const std::vector<types::global_dof_index> &dofs,
            const bool                                  friction);
-
-    /**
-     * After reinit() on a new mesh: the work and dissipation done on the
-     * old one.
-     */
-    void
-    carry_totals(const double work, const double dissipation)
-    {
-      contact_work           = work;
-      frictional_dissipation = dissipation;
-    }
 
     /** Before an assembly: the trial forces start from zero. */
     void
@@ -102,11 +96,31 @@ namespace ContactDynamics
       last_normal_work += work;
     }
 
-    /** The forces of the last committed step (for a checkpoint). */
-    std::vector<TrilinosWrappers::MPI::Vector *>
-    committed_forces()
+    std::string
+    name() const override
     {
-      return {&force_committed, &friction_force_committed};
+      return "contact work";
+    }
+
+    /** commit() of the converged state context.u from context.old_u. */
+    void
+    commit(const ContactHistoryContext &context) override
+    {
+      commit(*context.u, *context.old_u);
+    }
+
+    /** The work and the dissipation so far. */
+    void
+    save(CheckpointData &data, const ContactHistoryContext &) const override;
+    void
+    load(const CheckpointData &data, const ContactHistoryContext &) override;
+
+    /** The forces of the last committed step. */
+    void
+    list_vectors(std::vector<TrilinosWrappers::MPI::Vector *> &vectors) override
+    {
+      vectors.insert(vectors.end(),
+                     {&force_committed, &friction_force_committed});
     }
 
     /** Work of the contact forces on the bodies so far. */

@@ -8,8 +8,11 @@
 
 #include <contact_dynamics/contact/surface_contact.h>
 
+#include <functional>
 #include <map>
 #include <set>
+#include <string>
+#include <vector>
 
 namespace ContactDynamics
 {
@@ -25,30 +28,79 @@ namespace ContactDynamics
     parse_parameters(ParameterHandler &prm);
   };
 
+  /**
+   * The owner of the face memory of the projections: per pair (by index)
+   * and secondary node the primary face of the projection at the last
+   * committed step, and at the last assembly of this attempt (what the next
+   * iteration keeps; reset to the committed faces when an attempt starts,
+   * committed when the step is accepted).
+   */
+  class FaceMemory : public ContactHistoryOwner
+  {
+  public:
+    /** `comm`, `n_pairs`: the formulation's, as set up. */
+    FaceMemory(const MPI_Comm                      &comm,
+               const std::function<unsigned int()> &n_pairs)
+      : comm(comm)
+      , n_pairs(n_pairs)
+    {}
+
+    std::string
+    name() const override
+    {
+      return "node-to-segment faces";
+    }
+
+    void
+    start_attempt(const ContactHistoryContext &) override
+    {
+      trial = committed;
+    }
+
+    /** The faces of the converged state's projections (the last assembly). */
+    void
+    commit(const ContactHistoryContext &) override
+    {
+      committed = trial;
+    }
+
+    void
+    save(CheckpointData &data, const ContactHistoryContext &) const override;
+
+    /** Kept if the numbering is the saved one, else searched anew. */
+    void
+    load(const CheckpointData        &data,
+         const ContactHistoryContext &context) override;
+
+    /** The faces refer to the old mesh's nodes: the memory starts empty. */
+    void
+    transfer(const ContactHistoryContext &) override
+    {
+      committed.clear();
+      trial.clear();
+    }
+
+    /** The trial faces of a pair's nodes (empty at first). */
+    std::vector<unsigned int> &
+    trial_faces(const unsigned int pair)
+    {
+      return trial[pair];
+    }
+
+    std::map<unsigned int, std::vector<unsigned int>> trial;
+
+  private:
+    const MPI_Comm                                   &comm;
+    std::function<unsigned int()>                     n_pairs;
+    std::map<unsigned int, std::vector<unsigned int>> committed;
+  };
+
   template <int dim>
   class NodeToSegmentContact : public SurfaceContact<dim>
   {
   public:
     NodeToSegmentContact(const ContactParameters       &contact,
                          const NodeToSegmentParameters &parameters);
-
-    /** The face memory of the projections starts from the committed one. */
-    void
-    start_step() override;
-
-    /** The face memory refers to the old mesh's nodes: it starts empty. */
-    void
-    remesh(const DoFHandler<dim> &dof_handler) override;
-
-    /** Also commits the face memory of the projections. */
-    void
-    commit_step(const VectorType &u, const VectorType &old_u) override;
-
-    /** And the face memory (kept if the numbering is the saved one). */
-    void
-    save_history(CheckpointData &data) const override;
-    void
-    load_history(const CheckpointData &data, const VectorType &u) override;
 
   protected:
     using PairData = typename SurfaceContact<dim>::PairData;
@@ -128,13 +180,10 @@ namespace ContactDynamics
                       const std::vector<types::global_dof_index> &unknowns,
                       PatchForces                                &forces);
 
-    double smoothing_distance;
-    // per pair and secondary node: the primary face of the projection at
-    // the last committed step, and at the last assembly of this attempt
-    // (what the next iteration keeps; reset to the committed faces when an
-    // attempt starts, committed when the step is accepted)
-    std::map<std::ptrdiff_t, std::vector<unsigned int>> committed_face,
-      trial_face;
+    double     smoothing_distance;
+    FaceMemory face_memory;
+    // (face_memory.trial, as the 3-D projection reads it)
+    std::map<unsigned int, std::vector<unsigned int>> &trial_face;
   };
   // 3-D (node_to_segment_contact_3d.cc): closest points on bilinear faces
   template <>

@@ -10,65 +10,26 @@
 
 #include <deal.II/base/bounding_box.h>
 
+#include <contact_dynamics/contact/complementarity_parameters.h>
 #include <contact_dynamics/contact/contact_formulation.h>
+#include <contact_dynamics/contact/contact_history.h>
+#include <contact_dynamics/contact/contact_pair_data.h>
 #include <contact_dynamics/contact/contact_surface.h>
 #include <contact_dynamics/contact/contact_work.h>
+#include <contact_dynamics/contact/node_history.h>
+#include <contact_dynamics/contact/obstacle_coupling.h>
+#include <contact_dynamics/contact/patch_forces.h>
+#include <contact_dynamics/contact/search_history.h>
 
 #include <array>
 #include <map>
-#include <memory>
+#include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
 namespace ContactDynamics
 {
-  /** Parameters of the complementarity condition, per formulation. */
-  struct ComplementarityParameters
-  {
-    /** What keeps a node that is in contact from creating energy. */
-    enum class Stabilization
-    {
-      none,                 // the gap is enforced at every step (static)
-      persistency,          // Newmark rate of the weighted gap held at zero
-      velocity_persistency, // the paper's velocity-level gap rate
-      velocity_update       // static, then a velocity correction
-    };
-
-    double        c_n           = 1e6;
-    bool          normalize_c_n = true;
-    Stabilization stabilization;
-    double        capture_tolerance = 1e-5;
-    bool          exact_jacobian    = true;
-    double        c_t               = 1e4;
-
-    /** The formulations differ in the default stabilization only. */
-    explicit ComplementarityParameters(
-      const Stabilization stabilization = Stabilization::persistency)
-      : stabilization(stabilization)
-    {}
-
-    /** Whether a node in contact holds its gap (rate) in the next step. */
-    bool
-    holds_contact() const
-    {
-      return stabilization != Stabilization::none;
-    }
-
-    /** Declares the entries with the values of `defaults` as defaults. */
-    static void
-    declare_parameters(ParameterHandler                &prm,
-                       const ComplementarityParameters &defaults);
-    void
-    parse_parameters(ParameterHandler &prm);
-  };
-
-  /** A value and its derivatives with respect to global unknowns. */
-  struct LinearizedValue
-  {
-    double                                    value = 0;
-    std::map<types::global_dof_index, double> derivatives;
-  };
-
   template <int dim>
   class SurfaceContact : public ContactFormulation<dim>
   {
@@ -149,6 +110,13 @@ namespace ContactDynamics
       return normal_multiplier_dofs;
     }
 
+    /**
+     * The lifecycle of the history: calls of the owners in `history`
+     * (surface_contact.cc).
+     */
+    void
+    start_step() override;
+
     void
     commit_step(const VectorType &u, const VectorType &old_u) override;
 
@@ -169,7 +137,7 @@ namespace ContactDynamics
     double
     obstacle_work() const override
     {
-      return obstacle_work_done;
+      return obstacles.work();
     }
 
     /**
@@ -196,7 +164,7 @@ namespace ContactDynamics
     {
       // (not the normal work of a moving obstacle: that is external work)
       return complementarity.stabilization == Stabilization::velocity_update ?
-               work.normal_step_work() - obstacle_normal_step_work :
+               work.normal_step_work() - obstacles.normal_step_work() :
                0.;
     }
 
@@ -223,7 +191,7 @@ namespace ContactDynamics
     double
     dissipated_energy() const override
     {
-      return work.dissipation() + obstacle_friction_work;
+      return work.dissipation() + obstacles.friction_work();
     }
 
     void
@@ -237,12 +205,12 @@ namespace ContactDynamics
     nodal_output_fields() const override
     {
       std::vector<std::pair<const VectorType *, std::string>> fields{
-        {&gap_field, "normal_gap"}};
+        {&node_history.gap_field, "normal_gap"}};
       if (friction)
         {
-          fields.emplace_back(&slip_field[0], "slip_rate");
+          fields.emplace_back(&node_history.slip_field[0], "slip_rate");
           if (dim == 3)
-            fields.emplace_back(&slip_field[1], "slip_rate_2");
+            fields.emplace_back(&node_history.slip_field[1], "slip_rate_2");
         }
       return fields;
     }
@@ -287,121 +255,8 @@ namespace ContactDynamics
     }
 
   protected:
-    struct PairData
-    {
-      ContactSurface<dim>                    secondary, primary;
-      std::vector<std::vector<unsigned int>> candidates; // per patch
-      std::vector<std::vector<unsigned int>> pattern;    // in the sparsity
-      std::vector<NodeState>                 nodes;
-      // per secondary node: gap, its normalization weight, gap rate,
-      // relative tangential velocity (secondary minus primary) along the
-      // node's dim - 1 tangents
-      std::vector<LinearizedValue>                      gap, weight, gap_rate;
-      std::vector<std::array<LinearizedValue, dim - 1>> slip_rate;
-      double friction_coefficient = 0;
-      // in parallel: the nodes whose multipliers this process owns, the
-      // patches that touch them (whose candidates and couplings it needs)
-      // and the patches it computes (an equal share of all: the contact
-      // surface may lie on one process's part of the mesh); a patch's
-      // contributions to a node go to the node's owner (node_owner)
-      std::vector<bool>         owned_node, handled_patch, assembled_patch;
-      std::vector<unsigned int> node_owner;
-      // secondary nodes at the last committed step
-      std::vector<Point<dim>> position;
-      // a rigid obstacle as the primary side (`primary` is empty then), at
-      // the committed and the trial time; per secondary node the axis its
-      // tangents are built from (3-D, tangent_basis())
-      std::shared_ptr<const RigidObstacle<dim>> obstacle;
-      typename RigidObstacle<dim>::Placement    committed_place, trial_place;
-      std::vector<unsigned int>                 tangent_axis;
-      std::map<types::global_dof_index, std::pair<unsigned int, unsigned int>>
-        dof_node; // displacement dof -> (node, component)
-      // per secondary node that hangs on an adapted 3-D mesh: the nodes it
-      // follows and their weights (empty for a node with its own unknowns)
-      std::vector<std::vector<std::pair<unsigned int, double>>> hanging_parents;
-      // on the obstacle at the trial state and at the last committed step:
-      // force, torque about its center (3 components; z only in 2-D) and
-      // their friction parts
-      struct Reaction
-      {
-        Tensor<1, dim> force, friction_force;
-        Tensor<1, 3>   torque, friction_torque;
-      };
-      Reaction reaction, committed_reaction;
-    };
-
-    /**
-     * The forces of one patch in the order a formulation computes them;
-     * SurfaceContact adds them to the system (or, for a patch assembled
-     * for its gaps only, drops them).
-     */
-    struct PatchForces
-    {
-      using Derivatives =
-        std::vector<std::pair<types::global_dof_index, double>>;
-
-      /** A residual row of a contact force with its derivatives. */
-      void
-      add(const types::global_dof_index row,
-          const double                  value,
-          Derivatives                 &&derivatives)
-      {
-        rows.push_back({row, value, std::move(derivatives)});
-      }
-
-      /**
-       * The mortar normal force rows -sum_j lambda_j direction[i][j] of the
-       * positions i (the first direction.size() unknowns), with their
-       * derivatives in the multipliers (the unknowns that follow the
-       * positions) and, unless `hessian` is empty, in the positions
-       * (hessian[i n + l]); extra(i, derivatives) may add more.
-       */
-      template <std::size_t n_nodes, typename Extra>
-      void
-      add_normal_rows(const std::vector<types::global_dof_index>     &unknowns,
-                      const std::array<double, n_nodes>              &lambda,
-                      const std::vector<std::array<double, n_nodes>> &direction,
-                      const std::vector<double>                      &hessian,
-                      const Extra                                    &extra)
-      {
-        const unsigned int n_positions = direction.size();
-        for (unsigned int i = 0; i < n_positions; ++i)
-          {
-            Derivatives derivatives;
-            double      value = 0;
-            for (unsigned int j = 0; j < n_nodes; ++j)
-              {
-                value -= lambda[j] * direction[i][j];
-                if (direction[i][j] != 0)
-                  derivatives.emplace_back(unknowns[n_positions + j],
-                                           -direction[i][j]);
-              }
-            if (!hessian.empty())
-              for (unsigned int l = 0; l < n_positions; ++l)
-                if (const double h = hessian[i * n_positions + l]; h != 0)
-                  derivatives.emplace_back(unknowns[l], -h);
-            extra(i, derivatives);
-            if (value != 0 || !derivatives.empty())
-              add(unknowns[i], value, std::move(derivatives));
-          }
-      }
-
-      /** Records the tangential (friction) part of a force row. */
-      void
-      add_tangential(const types::global_dof_index row, const double value)
-      {
-        tangential.emplace_back(row, value);
-      }
-
-      struct Row
-      {
-        types::global_dof_index row;
-        double                  value;
-        Derivatives             derivatives;
-      };
-      std::vector<Row>                                        rows;
-      std::vector<std::pair<types::global_dof_index, double>> tangential;
-    };
+    using PairData    = ContactPairData<dim>;
+    using PatchForces = ContactDynamics::PatchForces;
 
     /**
      * Fraction of its reference weight a node's weight must reach for the
@@ -496,6 +351,15 @@ namespace ContactDynamics
     std::vector<PairData>     pairs;
 
     /**
+     * The owners of the history, in the order of their calls: the contact
+     * work, the obstacles, the nodes, the search (a formulation with history
+     * of its own adds its owner).
+     */
+    ContactHistoryRegistry history;
+
+    MPI_Comm comm = MPI_COMM_WORLD;
+
+    /**
      * Checkpoints: per pair, the node of this mesh at each saved node (by
      * reference position); empty if the numbering is the saved one. Throws
      * if a saved node is not on this mesh.
@@ -503,22 +367,6 @@ namespace ContactDynamics
     std::vector<std::vector<unsigned int>>
     saved_node_map(const CheckpointData &data) const;
 
-    /**
-     * Checkpoints: per-process lists of indices of a pair (`lists` on this
-     * process), all of them on the first process under `name`.
-     */
-    void
-    save_per_process(CheckpointData                               &data,
-                     const std::string                            &name,
-                     const std::vector<std::vector<unsigned int>> &lists) const;
-
-    /**
-     * The lists save_per_process() saved for this process, if the
-     * checkpoint comes from as many processes as there are now; else
-     * empty.
-     */
-    std::vector<std::vector<unsigned int>>
-    load_per_process(const CheckpointData &data, const std::string &name) const;
 
   private:
     /** The linear system an assembly adds to; constrained rows are skipped. */
@@ -530,6 +378,23 @@ namespace ContactDynamics
       MatrixType                      &jacobian;
       VectorType                      &residual_full; // all force rows
     };
+
+    /** setup(): the surfaces of pair p and its multiplier unknowns. */
+    void
+    build_pair(const unsigned int                 p,
+               const DoFHandler<dim>             &dof_handler,
+               std::set<types::global_dof_index> &secondary_normal);
+
+    /**
+     * setup(): the nodes of a pair this process owns, and the patches it
+     * handles and computes.
+     */
+    void
+    distribute(PairData &pair) const;
+
+    /** setup(): pair.hanging_parents from hanging_dofs. */
+    void
+    set_up_hanging_parents(PairData &pair) const;
 
     /** The patches this process computes; their forces are added. */
     void
@@ -604,6 +469,15 @@ namespace ContactDynamics
                   const unsigned int node,
                   const TrialState  &state) const;
 
+    /**
+     * The slip rates of node j normalized like its gap, with derivatives;
+     * stores them and the tangential tractions in the node's state.
+     */
+    std::array<LinearizedValue, dim - 1>
+    normalized_slip_rates(PairData          &pair,
+                          const unsigned int j,
+                          const VectorType  &u) const;
+
     /** The friction condition of node j, given its normal condition. */
     void
     assemble_friction(PairData              &pair,
@@ -640,10 +514,27 @@ namespace ContactDynamics
                         const VectorType &u,
                         const double      margin_factor) const;
 
-    /** The obstacle of a pair, its placements and node maps. */
-    void
-    set_up_obstacle(PairData                      &pair,
-                    const RigidObstacleParameters &parameters) const;
+    /**
+     * check_step() for the secondary node j of pair p, with the primary
+     * faces its patches found: the failure, or empty.
+     */
+    std::string
+    check_node(const unsigned int            p,
+               const unsigned int            j,
+               const std::set<unsigned int> &faces,
+               const VectorType             &u) const;
+
+    /**
+     * check_step(), per dimension (surface_contact_check_2d.cc, _3d.cc):
+     * how a node that moved from x0 to x1 went through one of the faces
+     * without being held, or empty.
+     */
+    std::string
+    passage_through_face(const PairData               &pair,
+                         const std::set<unsigned int> &faces,
+                         const Point<dim>             &x0,
+                         const Point<dim>             &x1,
+                         const VectorType             &u) const;
 
     /** Makes the node states of all processes' nodes known everywhere. */
     void
@@ -653,13 +544,7 @@ namespace ContactDynamics
     void
     finish_assembly(const LinearSystem &system);
 
-    MPI_Comm comm = MPI_COMM_WORLD;
     IndexSet owned_dofs;
-
-    // the state of the last committed step (ghosted like the trial state),
-    // for the swept search; zero (the reference configuration) before it
-    VectorType committed_u;
-    bool       committed_is_next = false; // after remesh()
 
     std::vector<types::global_dof_index> normal_multiplier_dofs;
     std::vector<types::global_dof_index> other_multiplier_dofs;
@@ -670,25 +555,33 @@ namespace ContactDynamics
              std::vector<std::pair<types::global_dof_index, double>>>
       hanging_dofs;
 
-    double committed_time = 0, trial_time = 0;
-    // the work of the obstacles on the bodies, and its friction part
-    double obstacle_work_done = 0, obstacle_friction_work = 0;
-    double obstacle_normal_step_work = 0; // of the last committed step
+    // the owners of history (registered in `history`)
+    ContactWork           work;
+    ObstacleCoupling<dim> obstacles;
+    NodeHistory<dim>      node_history;
+    SearchHistory<dim>    search;
 
-    /** Adds a patch's forces to the reaction on the pair's obstacle. */
-    void
-    add_reaction(PairData          &pair,
-                 const PatchForces &forces,
-                 const VectorType  &u) const;
-
-    ContactWork  work;
     bool         friction = false;
     unsigned int n_stick = 0, n_slip = 0;
-    VectorType   gap_field; // normalized gap at the multiplier dofs
-    std::array<VectorType, dim - 1> slip_field; // slip rates, likewise
-    unsigned int                    n_active         = 0;
-    double                          total_force[dim] = {};
+    unsigned int n_active         = 0;
+    double       total_force[dim] = {};
   };
+
+  // the per-dimension penetration checks
+  template <>
+  std::string
+  SurfaceContact<2>::passage_through_face(const PairData               &pair,
+                                          const std::set<unsigned int> &faces,
+                                          const Point<2>               &x0,
+                                          const Point<2>               &x1,
+                                          const VectorType &u) const;
+  template <>
+  std::string
+  SurfaceContact<3>::passage_through_face(const PairData               &pair,
+                                          const std::set<unsigned int> &faces,
+                                          const Point<3>               &x0,
+                                          const Point<3>               &x1,
+                                          const VectorType &u) const;
 } // namespace ContactDynamics
 
 #endif

@@ -1,0 +1,28 @@
+// Points in messages: "(x, y)" or "(x, y, z)".
+#ifndef contact_dynamics_contact_coordinates_h
+#define contact_dynamics_contact_coordinates_h
+
+#include <deal.II/base/point.h>
+
+#include <sstream>
+#include <string>
+
+namespace ContactDynamics
+{
+  using namespace dealii;
+
+  /** "(x, y)" or "(x, y, z)", with the stream's default format. */
+  template <int dim>
+  std::string
+  coordinates(const Point<dim> &x)
+  {
+    std::ostringstream out;
+    out << '(';
+    for (unsigned int d = 0; d < dim; ++d)
+      out << (d > 0 ? ", " : "") << x[d];
+    out << ')';
+    return out.str();
+  }
+} // namespace ContactDynamics
+
+#endif

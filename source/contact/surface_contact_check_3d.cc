@@ -1,0 +1,95 @@
+// The 3-D passage of a secondary node through a bilinear primary face: the
+// depth behind the face at the end of the step of a node that was in front
+// of it at the start.
+#include <contact_dynamics/contact/closest_point_3d.h>
+#include <contact_dynamics/contact/coordinates.h>
+#include <contact_dynamics/contact/surface_contact.h>
+
+#include <algorithm>
+#include <sstream>
+
+namespace ContactDynamics
+{
+  namespace
+  {
+    std::array<ClippingGeometry::Vec3<double>, 4>
+    face_nodes(const ContactSurface<3> &surface,
+               const unsigned int       face,
+               const VectorType        &u)
+    {
+      std::array<ClippingGeometry::Vec3<double>, 4> x;
+      for (unsigned int a = 0; a < 4; ++a)
+        x[a] = surface.position(surface.faces[face][a], u);
+      return x;
+    }
+
+    Point<3>
+    face_center(const ContactSurface<3> &surface,
+                const unsigned int       face,
+                const VectorType        &u)
+    {
+      return Point<3>(
+        ClippingGeometry::interpolate(face_nodes(surface, face, u), 0.5, 0.5));
+    }
+
+    // 3-D: how far the point x1 (x0 at the last step) lies behind the
+    // bilinear face at the state u (committed_u), if it projects onto the
+    // face at both states and was in front of it before; else 0. (The
+    // states at the ends of the step, not the swept path of 2-D.)
+    double
+    depth_behind_face(const ContactSurface<3> &surface,
+                      const unsigned int       face,
+                      const Point<3>          &x0,
+                      const Point<3>          &x1,
+                      const VectorType        &committed_u,
+                      const VectorType        &u)
+    {
+      using namespace ClippingGeometry;
+      double signed_distance[2];
+      for (unsigned int k = 0; k < 2; ++k)
+        {
+          const auto   x = face_nodes(surface, face, k == 0 ? committed_u : u);
+          const auto  &p = k == 0 ? x0 : x1;
+          double       xi, eta;
+          const double margin = 1e-10;
+          if (!closest_point(x, p, xi, eta) || xi < -margin || eta < -margin ||
+              xi > 1 + margin || eta > 1 + margin)
+            return 0;
+          const auto   t = tangents(x, xi, eta);
+          Vec3<double> n = ClippingGeometry::cross(t[0], t[1]);
+          n /= norm(n);
+          signed_distance[k] = (p - interpolate(x, xi, eta)) * n;
+        }
+      return signed_distance[0] >= 0 && signed_distance[1] < 0 ?
+               -signed_distance[1] :
+               0.;
+    }
+  } // namespace
+
+  template <>
+  std::string
+  SurfaceContact<3>::passage_through_face(const PairData               &pair,
+                                          const std::set<unsigned int> &faces,
+                                          const Point<3>               &x0,
+                                          const Point<3>               &x1,
+                                          const VectorType             &u) const
+  {
+    const auto &f = pair.primary;
+    for (const unsigned int e : faces)
+      if (const double depth =
+            depth_behind_face(f, e, x0, x1, search.committed_u, u);
+          depth >
+          std::max(complementarity.capture_tolerance, 1e-2 * f.depth[e]))
+        {
+          std::ostringstream passage;
+          passage << "went through the primary face with center "
+                  << coordinates(face_center(f, e, u))
+                  << " in this step and ends " << depth
+                  << " behind it, but its contact condition is not active";
+          return passage.str();
+        }
+    return {};
+  }
+
+
+} // namespace ContactDynamics
