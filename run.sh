@@ -9,7 +9,8 @@ cd "$(dirname "$0")"
 
 # libopenblas0-serial: an optimized BLAS (single-threaded, so that parallel
 # runs and ctest -j do not oversubscribe) for UMFPACK's dense fronts
-packages=(cmake g++ make libdeal.ii-dev numdiff perl openmpi-bin libopenblas0-serial)
+# python3: the size check of the sources and the reliability tests
+packages=(cmake g++ make libdeal.ii-dev numdiff perl python3 openmpi-bin libopenblas0-serial)
 # scripts that need more (the benchmark plots) name it here
 read -r -a extra <<< "${EXTRA_PACKAGES:-}"
 packages+=("${extra[@]}")
