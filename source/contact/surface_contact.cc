@@ -376,6 +376,141 @@ namespace ContactDynamics
     history.load(data, context);
   }
 
+  template <int dim>
+  unsigned int
+  SurfaceContact<dim>::n_extra_components() const
+  {
+    return dim;
+  }
+
+  template <int dim>
+  unsigned int
+  SurfaceContact<dim>::n_owned_contact_nodes() const
+  {
+    unsigned int n = 0;
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      n += n_owned_nodes(p);
+    return n;
+  }
+
+  template <int dim>
+  unsigned int
+  SurfaceContact<dim>::n_active_nodes() const
+  {
+    return n_active;
+  }
+
+  template <int dim>
+  const std::vector<types::global_dof_index> &
+  SurfaceContact<dim>::multiplier_dofs() const
+  {
+    return normal_multiplier_dofs;
+  }
+
+  template <int dim>
+  double
+  SurfaceContact<dim>::obstacle_work() const
+  {
+    return obstacles.work();
+  }
+
+  template <int dim>
+  double
+  SurfaceContact<dim>::contact_work() const
+  {
+    return work.work();
+  }
+
+  template <int dim>
+  double
+  SurfaceContact<dim>::velocity_update_request() const
+  {
+    // (not the normal work of a moving obstacle: that is external work)
+    return complementarity.stabilization == Stabilization::velocity_update ?
+             work.normal_step_work() - obstacles.normal_step_work() :
+             0.;
+  }
+
+  template <int dim>
+  const VectorType *
+  SurfaceContact<dim>::velocity_update_force() const
+  {
+    return &work.step_normal_force();
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::add_velocity_update_work(const double work_done)
+  {
+    work.add_impulse_work(work_done);
+  }
+
+  template <int dim>
+  double
+  SurfaceContact<dim>::dissipated_energy() const
+  {
+    return work.dissipation() + obstacles.friction_work();
+  }
+
+  template <int dim>
+  std::vector<std::pair<const VectorType *, std::string>>
+  SurfaceContact<dim>::nodal_output_fields() const
+  {
+    std::vector<std::pair<const VectorType *, std::string>> fields{
+      {&node_history.gap_field, "normal_gap"}};
+    if (friction)
+      {
+        fields.emplace_back(&node_history.slip_field[0], "slip_rate");
+        if (dim == 3)
+          fields.emplace_back(&node_history.slip_field[1], "slip_rate_2");
+      }
+    return fields;
+  }
+
+  template <int dim>
+  const std::vector<ContactNodeState> &
+  SurfaceContact<dim>::node_states(const unsigned int pair) const
+  {
+    return pairs[pair].nodes;
+  }
+
+  template <int dim>
+  const ContactSurface<dim> &
+  SurfaceContact<dim>::secondary_surface(const unsigned int pair) const
+  {
+    return pairs[pair].secondary;
+  }
+
+  template <int dim>
+  const ContactSurface<dim> &
+  SurfaceContact<dim>::primary_surface(const unsigned int pair) const
+  {
+    return pairs[pair].primary;
+  }
+
+  template <int dim>
+  unsigned int
+  SurfaceContact<dim>::n_pairs() const
+  {
+    return pairs.size();
+  }
+
+  template <int dim>
+  SecondaryNodes<dim>
+  SurfaceContact<dim>::secondary_nodes(const unsigned int pair) const
+  {
+    return {pairs[pair].secondary.reference,
+            pairs[pair].position,
+            pairs[pair].nodes};
+  }
+
+  template <int dim>
+  const std::vector<std::vector<double>> &
+  SurfaceContact<dim>::monitored_points() const
+  {
+    return contact.monitored_points;
+  }
+
   template class SurfaceContact<2>;
   template class SurfaceContact<3>;
 } // namespace ContactDynamics

@@ -14,6 +14,23 @@
 
 namespace ContactDynamics
 {
+  // the per-dimension penetration checks (surface_contact_check_2d.cc,
+  // _3d.cc): declared before their use here, the only one
+  template <>
+  std::string
+  SurfaceContact<2>::passage_through_face(const PairData               &pair,
+                                          const std::set<unsigned int> &faces,
+                                          const Point<2>               &x0,
+                                          const Point<2>               &x1,
+                                          const VectorType &u) const;
+  template <>
+  std::string
+  SurfaceContact<3>::passage_through_face(const PairData               &pair,
+                                          const std::set<unsigned int> &faces,
+                                          const Point<3>               &x0,
+                                          const Point<3>               &x1,
+                                          const VectorType &u) const;
+
   template <int dim>
   std::string
   SurfaceContact<dim>::check_step(const VectorType &u) const

@@ -14,6 +14,7 @@
 #include <contact_dynamics/contact/contact_formulation.h>
 #include <contact_dynamics/contact/contact_history.h>
 #include <contact_dynamics/contact/contact_pair_data.h>
+#include <contact_dynamics/contact/contact_patches.h>
 #include <contact_dynamics/contact/contact_surface.h>
 #include <contact_dynamics/contact/contact_work.h>
 #include <contact_dynamics/contact/node_history.h>
@@ -31,7 +32,8 @@
 namespace ContactDynamics
 {
   template <int dim>
-  class SurfaceContact : public ContactFormulation<dim>
+  class SurfaceContact : public ContactFormulation<dim>,
+                         protected ContactPatches<dim>
   {
   public:
     using NodeState     = ContactNodeState;
@@ -41,10 +43,7 @@ namespace ContactDynamics
                    const ComplementarityParameters &complementarity);
 
     unsigned int
-    n_extra_components() const override
-    {
-      return dim;
-    }
+    n_extra_components() const override;
 
     std::vector<std::string>
     extra_component_names() const override;
@@ -82,19 +81,10 @@ namespace ContactDynamics
     n_owned_nodes(const unsigned int pair) const;
 
     unsigned int
-    n_owned_contact_nodes() const override
-    {
-      unsigned int n = 0;
-      for (unsigned int p = 0; p < pairs.size(); ++p)
-        n += n_owned_nodes(p);
-      return n;
-    }
+    n_owned_contact_nodes() const override;
 
     unsigned int
-    n_active_nodes() const override
-    {
-      return n_active;
-    }
+    n_active_nodes() const override;
 
     void
     assemble(const TrialState                &state,
@@ -105,10 +95,7 @@ namespace ContactDynamics
              VectorType                      &residual_full) override;
 
     const std::vector<types::global_dof_index> &
-    multiplier_dofs() const override
-    {
-      return normal_multiplier_dofs;
-    }
+    multiplier_dofs() const override;
 
     /**
      * The lifecycle of the history: calls of the owners in `history`
@@ -135,10 +122,7 @@ namespace ContactDynamics
 
     /** The work the rigid obstacles did on the bodies so far. */
     double
-    obstacle_work() const override
-    {
-      return obstacles.work();
-    }
+    obstacle_work() const override;
 
     /**
      * Rejects a step in which a secondary node went through a primary face
@@ -148,10 +132,7 @@ namespace ContactDynamics
     check_step(const VectorType &u) const override;
 
     double
-    contact_work() const override
-    {
-      return work.work();
-    }
+    contact_work() const override;
 
     std::vector<std::string>
     statistics_columns() const override;
@@ -160,28 +141,16 @@ namespace ContactDynamics
     statistics() const override;
 
     double
-    velocity_update_request() const override
-    {
-      // (not the normal work of a moving obstacle: that is external work)
-      return complementarity.stabilization == Stabilization::velocity_update ?
-               work.normal_step_work() - obstacles.normal_step_work() :
-               0.;
-    }
+    velocity_update_request() const override;
 
     std::vector<MultiplierGroup>
     multiplier_groups() const override;
 
     const VectorType *
-    velocity_update_force() const override
-    {
-      return &work.step_normal_force();
-    }
+    velocity_update_force() const override;
 
     void
-    add_velocity_update_work(const double work_done) override
-    {
-      work.add_impulse_work(work_done);
-    }
+    add_velocity_update_work(const double work_done) override;
 
     /**
      * Friction on both sides: a rigid obstacle's share (its friction
@@ -189,10 +158,7 @@ namespace ContactDynamics
      * meshed surfaces.
      */
     double
-    dissipated_energy() const override
-    {
-      return work.dissipation() + obstacles.friction_work();
-    }
+    dissipated_energy() const override;
 
     void
     check_initial_state(std::ostream &log) const override;
@@ -202,140 +168,42 @@ namespace ContactDynamics
      * nodal tangents (of the last committed step).
      */
     std::vector<std::pair<const VectorType *, std::string>>
-    nodal_output_fields() const override
-    {
-      std::vector<std::pair<const VectorType *, std::string>> fields{
-        {&node_history.gap_field, "normal_gap"}};
-      if (friction)
-        {
-          fields.emplace_back(&node_history.slip_field[0], "slip_rate");
-          if (dim == 3)
-            fields.emplace_back(&node_history.slip_field[1], "slip_rate_2");
-        }
-      return fields;
-    }
+    nodal_output_fields() const override;
 
     const std::vector<NodeState> &
-    node_states(const unsigned int pair) const
-    {
-      return pairs[pair].nodes;
-    }
+    node_states(const unsigned int pair) const;
 
     const ContactSurface<dim> &
-    secondary_surface(const unsigned int pair) const
-    {
-      return pairs[pair].secondary;
-    }
+    secondary_surface(const unsigned int pair) const;
 
     /** Empty for a rigid obstacle. */
     const ContactSurface<dim> &
-    primary_surface(const unsigned int pair) const
-    {
-      return pairs[pair].primary;
-    }
+    primary_surface(const unsigned int pair) const;
 
     unsigned int
-    n_pairs() const override
-    {
-      return pairs.size();
-    }
+    n_pairs() const override;
 
     SecondaryNodes<dim>
-    secondary_nodes(const unsigned int pair) const override
-    {
-      return {pairs[pair].secondary.reference,
-              pairs[pair].position,
-              pairs[pair].nodes};
-    }
+    secondary_nodes(const unsigned int pair) const override;
 
     const std::vector<std::vector<double>> &
-    monitored_points() const override
-    {
-      return contact.monitored_points;
-    }
+    monitored_points() const override;
 
   protected:
     using PairData    = ContactPairData<dim>;
     using PatchForces = ContactDynamics::PatchForces;
 
-    /**
-     * Fraction of its reference weight a node's weight must reach for the
-     * node to count as projected.
-     */
-    virtual double
-    minimum_coverage() const
-    {
-      return 1e-12;
-    }
-
-    /**
-     * Traction on the current surface per unit multiplier at secondary node
-     * j, for the output of pressures: 1 where the multipliers are tractions
-     * on the current surface (mortar).
-     */
-    virtual double
-    traction_per_multiplier(const PairData &,
-                            const unsigned int,
-                            const VectorType &) const
-    {
-      return 1.;
-    }
-
-    /**
-     * The factor between a node's multiplier times the derivative of its
-     * gap sum and the force it exerts: 1 where the force is the derivative
-     * of lambda_j g_j (mortar), the node's reference weight where it is
-     * lambda_j L_j n_j (node-to-segment). A hanging node's sums go to the
-     * nodes it follows scaled by it, so that each node's condition stays
-     * conjugate to its force.
-     */
-    virtual double
-    force_per_gap_sum(const PairData &, const unsigned int) const
-    {
-      return 1.;
-    }
-
-    /** Number of patches of a pair (faces or nodes of the secondary side). */
-    virtual unsigned int
-    n_patches(const PairData &pair) const = 0;
-
-    /** Box around a patch in the configuration u, before enlarging. */
-    virtual BoundingBox<dim>
-    patch_box(const PairData    &pair,
-              const unsigned int patch,
-              const VectorType  &u,
-              double            &size) const = 0;
-
-    /** Secondary nodes whose gaps a patch contributes to. */
-    virtual std::vector<unsigned int>
-    patch_nodes(const PairData &pair, const unsigned int patch) const = 0;
-
-    /** Unknowns a patch's contributions depend on, given primary faces. */
-    virtual std::vector<types::global_dof_index>
-    patch_unknowns(const PairData                  &pair,
-                   const unsigned int               patch,
-                   const std::vector<unsigned int> &primary_faces) const = 0;
-
-    /**
-     * Adds a patch's forces to `forces` and its contributions to pair.gap,
-     * pair.weight, pair.gap_rate and pair.slip_rate of its nodes.
-     */
-    virtual void
-    assemble_patch(PairData          &pair,
-                   const unsigned int patch,
-                   const TrialState  &state,
-                   PatchForces       &forces) = 0;
-
-    /**
-     * assemble_patch() for a pair whose primary side is a rigid obstacle
-     * (pair.obstacle, at pair.trial_place), with the unknowns of
-     * obstacle_patch_unknowns().
-     */
-    virtual void
-    assemble_obstacle_patch(PairData          &pair,
-                            const unsigned int patch,
-                            const TrialState  &state,
-                            PatchForces       &forces) = 0;
+    // the patch interface (ContactPatches), named here since it is a
+    // dependent base
+    using ContactPatches<dim>::minimum_coverage;
+    using ContactPatches<dim>::traction_per_multiplier;
+    using ContactPatches<dim>::force_per_gap_sum;
+    using ContactPatches<dim>::n_patches;
+    using ContactPatches<dim>::patch_box;
+    using ContactPatches<dim>::patch_nodes;
+    using ContactPatches<dim>::patch_unknowns;
+    using ContactPatches<dim>::assemble_patch;
+    using ContactPatches<dim>::assemble_obstacle_patch;
 
     /**
      * The unknowns of a patch against a rigid obstacle: the displacements
@@ -566,22 +434,6 @@ namespace ContactDynamics
     unsigned int n_active         = 0;
     double       total_force[dim] = {};
   };
-
-  // the per-dimension penetration checks
-  template <>
-  std::string
-  SurfaceContact<2>::passage_through_face(const PairData               &pair,
-                                          const std::set<unsigned int> &faces,
-                                          const Point<2>               &x0,
-                                          const Point<2>               &x1,
-                                          const VectorType &u) const;
-  template <>
-  std::string
-  SurfaceContact<3>::passage_through_face(const PairData               &pair,
-                                          const std::set<unsigned int> &faces,
-                                          const Point<3>               &x0,
-                                          const Point<3>               &x1,
-                                          const VectorType &u) const;
 } // namespace ContactDynamics
 
 #endif
