@@ -82,10 +82,17 @@ namespace ContactDynamics
     friction = false;
     for (unsigned int p = 0; p < contact.pairs.size(); ++p)
       build_pair(p, dof_handler, secondary_normal);
-    collect_hanging_dofs(dof_handler);
+    {
+      std::set<types::global_dof_index> surface;
+      for (const auto &pair : pairs)
+        for (const auto *side : {&pair.secondary, &pair.primary})
+          for (const auto &node_dofs : side->dofs)
+            surface.insert(node_dofs.begin(), node_dofs.end());
+      hanging.collect(dof_handler, surface, owned_dofs);
+    }
     for (auto &pair : pairs)
       {
-        set_up_hanging_parents(pair);
+        pair.hanging_parents = hanging.node_parents(pair.secondary, dim);
         distribute(pair);
       }
     normal_multiplier_dofs.assign(secondary_normal.begin(),

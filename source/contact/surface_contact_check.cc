@@ -5,6 +5,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <contact_dynamics/contact/coordinates.h>
+#include <contact_dynamics/contact/face_passage.h>
 #include <contact_dynamics/contact/surface_contact.h>
 
 #include <algorithm>
@@ -14,23 +15,6 @@
 
 namespace ContactDynamics
 {
-  // the per-dimension penetration checks (surface_contact_check_2d.cc,
-  // _3d.cc): declared before their use here, the only one
-  template <>
-  std::string
-  SurfaceContact<2>::passage_through_face(const PairData               &pair,
-                                          const std::set<unsigned int> &faces,
-                                          const Point<2>               &x0,
-                                          const Point<2>               &x1,
-                                          const VectorType &u) const;
-  template <>
-  std::string
-  SurfaceContact<3>::passage_through_face(const PairData               &pair,
-                                          const std::set<unsigned int> &faces,
-                                          const Point<3>               &x0,
-                                          const Point<3>               &x1,
-                                          const VectorType &u) const;
-
   template <int dim>
   std::string
   SurfaceContact<dim>::check_step(const VectorType &u) const
@@ -130,7 +114,14 @@ namespace ContactDynamics
     // (a node behind an obstacle is projected: its gap says so)
     if (node.active || node.persistent || pair.obstacle)
       return {};
-    const std::string passage = passage_through_face(pair, faces, x0, x1, u);
+    const std::string passage =
+      passage_through_face(pair.primary,
+                           faces,
+                           x0,
+                           x1,
+                           search.committed_u,
+                           u,
+                           complementarity.capture_tolerance);
     if (passage.empty())
       return {};
     failure << passage;

@@ -1,6 +1,6 @@
 // The 2-D passage of a secondary node through a primary face: the swept
 // path of the node relative to the moving face, exactly (a quadratic).
-#include <contact_dynamics/contact/surface_contact.h>
+#include <contact_dynamics/contact/face_passage.h>
 
 #include <algorithm>
 #include <cmath>
@@ -67,30 +67,30 @@ namespace ContactDynamics
     }
   } // namespace
 
-  template <>
   std::string
-  SurfaceContact<2>::passage_through_face(const PairData               &pair,
-                                          const std::set<unsigned int> &faces,
-                                          const Point<2>               &x0,
-                                          const Point<2>               &x1,
-                                          const VectorType             &u) const
+  passage_through_face(const ContactSurface<2>      &f,
+                       const std::set<unsigned int> &faces,
+                       const Point<2>               &x0,
+                       const Point<2>               &x1,
+                       const VectorType             &committed_u,
+                       const VectorType             &u,
+                       const double                  tolerance)
   {
-    const auto &f = pair.primary;
     for (const unsigned int e : faces)
       {
         const unsigned int a = f.faces[e][0], b = f.faces[e][1];
         const Point<2>     a1 = f.position(a, u), b1 = f.position(b, u);
         if (!crosses_face(x0,
                           x1,
-                          f.position(a, search.committed_u),
+                          f.position(a, committed_u),
                           a1,
-                          f.position(b, search.committed_u),
+                          f.position(b, committed_u),
                           b1))
           continue;
         const double length = a1.distance(b1);
         const double depth =
           -cross(x1 - a1, b1 - a1) / std::max(length, 1e-300);
-        if (depth <= std::max(complementarity.capture_tolerance, 1e-2 * length))
+        if (depth <= std::max(tolerance, 1e-2 * length))
           continue;
         std::ostringstream passage;
         passage << "went through the primary face from (" << a1[0] << ", "

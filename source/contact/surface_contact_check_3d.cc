@@ -3,7 +3,7 @@
 // of it at the start.
 #include <contact_dynamics/contact/closest_point_3d.h>
 #include <contact_dynamics/contact/coordinates.h>
-#include <contact_dynamics/contact/surface_contact.h>
+#include <contact_dynamics/contact/face_passage.h>
 
 #include <algorithm>
 #include <sstream>
@@ -66,20 +66,18 @@ namespace ContactDynamics
     }
   } // namespace
 
-  template <>
   std::string
-  SurfaceContact<3>::passage_through_face(const PairData               &pair,
-                                          const std::set<unsigned int> &faces,
-                                          const Point<3>               &x0,
-                                          const Point<3>               &x1,
-                                          const VectorType             &u) const
+  passage_through_face(const ContactSurface<3>      &f,
+                       const std::set<unsigned int> &faces,
+                       const Point<3>               &x0,
+                       const Point<3>               &x1,
+                       const VectorType             &committed_u,
+                       const VectorType             &u,
+                       const double                  tolerance)
   {
-    const auto &f = pair.primary;
     for (const unsigned int e : faces)
-      if (const double depth =
-            depth_behind_face(f, e, x0, x1, search.committed_u, u);
-          depth >
-          std::max(complementarity.capture_tolerance, 1e-2 * f.depth[e]))
+      if (const double depth = depth_behind_face(f, e, x0, x1, committed_u, u);
+          depth > std::max(tolerance, 1e-2 * f.depth[e]))
         {
           std::ostringstream passage;
           passage << "went through the primary face with center "

@@ -155,7 +155,8 @@ namespace ContactDynamics
                               with_jacobian,
                               residual,
                               jacobian,
-                              residual_full};
+                              residual_full,
+                              hanging};
     // (every pair's sums exist before any patch can fail: the exchange
     // runs anyway)
     for (auto &pair : pairs)
@@ -220,9 +221,8 @@ namespace ContactDynamics
     std::vector<std::pair<types::global_dof_index, double>> to(1);
     const auto targets = [&](const types::global_dof_index row)
       -> const std::vector<std::pair<types::global_dof_index, double>> & {
-      if (!hanging_dofs.empty())
-        if (const auto h = hanging_dofs.find(row); h != hanging_dofs.end())
-          return h->second;
+      if (const auto *h = hanging.find(row))
+        return *h;
       to[0] = {row, 1.};
       return to;
     };
@@ -235,7 +235,7 @@ namespace ContactDynamics
             continue;
           system.residual(row) += weight * r.value;
           if (system.with_jacobian)
-            add_row(system, row, r.derivatives, weight);
+            system.add_row(row, r.derivatives, weight);
         }
     for (const auto &t : forces.tangential)
       for (const auto &[row, weight] : targets(t.first))
@@ -394,7 +394,7 @@ namespace ContactDynamics
       {
         system.residual(row) += scale * constraint.value;
         if (system.with_jacobian)
-          add_row(system, row, constraint.derivatives, scale);
+          system.add_row(row, constraint.derivatives, scale);
       }
     else
       {
@@ -498,10 +498,9 @@ namespace ContactDynamics
             system.residual(rows[a]) +=
               scale * complementarity.c_t * v[a].value;
             if (system.with_jacobian)
-              add_row(system,
-                      rows[a],
-                      v[a].derivatives,
-                      scale * complementarity.c_t);
+              system.add_row(rows[a],
+                             v[a].derivatives,
+                             scale * complementarity.c_t);
           }
         return;
       }
@@ -530,7 +529,7 @@ namespace ContactDynamics
                                          xi,
                                          trial_norm,
                                          complementarity.c_t);
-        add_row(system, rows[a], row, scale);
+        system.add_row(rows[a], row, scale);
       }
   }
 

@@ -138,9 +138,8 @@ namespace ContactDynamics
                                 patch_unknowns(pair, p, pair.pattern[p]);
               // and what hanging ones follow
               for (unsigned int i = 0, n = unknowns.size(); i < n; ++i)
-                if (const auto h = hanging_dofs.find(unknowns[i]);
-                    h != hanging_dofs.end())
-                  for (const auto &parent : h->second)
+                if (const auto *h = hanging.find(unknowns[i]))
+                  for (const auto &parent : *h)
                     unknowns.push_back(parent.first);
               if (pair.assembled_patch[p])
                 for (const auto row : unknowns)

@@ -17,6 +17,7 @@
 #include <contact_dynamics/contact/contact_patches.h>
 #include <contact_dynamics/contact/contact_surface.h>
 #include <contact_dynamics/contact/contact_work.h>
+#include <contact_dynamics/contact/hanging_surface_dofs.h>
 #include <contact_dynamics/contact/node_history.h>
 #include <contact_dynamics/contact/obstacle_coupling.h>
 #include <contact_dynamics/contact/patch_forces.h>
@@ -237,15 +238,7 @@ namespace ContactDynamics
 
 
   private:
-    /** The linear system an assembly adds to; constrained rows are skipped. */
-    struct LinearSystem
-    {
-      const AffineConstraints<double> &constraints;
-      const bool                       with_jacobian;
-      VectorType                      &residual;
-      MatrixType                      &jacobian;
-      VectorType                      &residual_full; // all force rows
-    };
+    using LinearSystem = ContactLinearSystem;
 
     /** setup(): the surfaces of pair p and its multiplier unknowns. */
     void
@@ -259,10 +252,6 @@ namespace ContactDynamics
      */
     void
     distribute(PairData &pair) const;
-
-    /** setup(): pair.hanging_parents from hanging_dofs. */
-    void
-    set_up_hanging_parents(PairData &pair) const;
 
     /** The patches this process computes; their forces are added. */
     void
@@ -289,31 +278,12 @@ namespace ContactDynamics
     add_forces(const PatchForces &forces, const LinearSystem &system);
 
     /**
-     * Adds factor times the derivatives to a row of the Jacobian: columns
-     * of hanging degrees of freedom go to the columns they follow, other
-     * constrained columns are dropped.
-     */
-    template <typename Derivatives>
-    void
-    add_row(const LinearSystem           &system,
-            const types::global_dof_index row,
-            const Derivatives            &derivatives,
-            const double                  factor = 1.) const;
-
-    /**
      * Moves the gap, weight and rate sums of the hanging secondary nodes to
      * the nodes they follow (the multiplier of a hanging node is that
      * interpolation of theirs, so its condition is part of theirs).
      */
     void
     move_hanging_sums(PairData &pair) const;
-
-    /**
-     * hanging_dofs from the hanging-node constraints of every process
-     * (collective).
-     */
-    void
-    collect_hanging_dofs(const DoFHandler<dim> &dof_handler);
 
     /**
      * The normal complementarity condition of node j: its state, the
@@ -392,18 +362,6 @@ namespace ContactDynamics
                const std::set<unsigned int> &faces,
                const VectorType             &u) const;
 
-    /**
-     * check_step(), per dimension (surface_contact_check_2d.cc, _3d.cc):
-     * how a node that moved from x0 to x1 went through one of the faces
-     * without being held, or empty.
-     */
-    std::string
-    passage_through_face(const PairData               &pair,
-                         const std::set<unsigned int> &faces,
-                         const Point<dim>             &x0,
-                         const Point<dim>             &x1,
-                         const VectorType             &u) const;
-
     /** Makes the node states of all processes' nodes known everywhere. */
     void
     gather_node_states();
@@ -417,11 +375,7 @@ namespace ContactDynamics
     std::vector<types::global_dof_index> normal_multiplier_dofs;
     std::vector<types::global_dof_index> other_multiplier_dofs;
 
-    // the hanging-node constraints of the surface dofs of an adapted 3-D
-    // mesh, of all processes (a process computes patches of any part)
-    std::map<types::global_dof_index,
-             std::vector<std::pair<types::global_dof_index, double>>>
-      hanging_dofs;
+    HangingSurfaceDofs hanging;
 
     // the owners of history (registered in `history`)
     ContactWork           work;

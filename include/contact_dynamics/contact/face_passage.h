@@ -1,0 +1,37 @@
+// SurfaceContact::check_step() per dimension (surface_contact_check_2d.cc,
+// _3d.cc): how a secondary node that moved from x0 to x1 in a step went
+// through one of the given faces of a primary surface (moving from their
+// positions at committed_u to those at u) and ends deeper than the tolerance
+// behind it; empty if it did not.
+#ifndef contact_dynamics_contact_face_passage_h
+#define contact_dynamics_contact_face_passage_h
+
+#include <contact_dynamics/contact/contact_surface.h>
+
+#include <set>
+#include <string>
+
+namespace ContactDynamics
+{
+  using VectorType = TrilinosWrappers::MPI::Vector;
+
+  std::string
+  passage_through_face(const ContactSurface<2>      &primary,
+                       const std::set<unsigned int> &faces,
+                       const Point<2>               &x0,
+                       const Point<2>               &x1,
+                       const VectorType             &committed_u,
+                       const VectorType             &u,
+                       const double                  tolerance);
+
+  std::string
+  passage_through_face(const ContactSurface<3>      &primary,
+                       const std::set<unsigned int> &faces,
+                       const Point<3>               &x0,
+                       const Point<3>               &x1,
+                       const VectorType             &committed_u,
+                       const VectorType             &u,
+                       const double                  tolerance);
+} // namespace ContactDynamics
+
+#endif
