@@ -13,6 +13,7 @@
 
 #include <contact_dynamics/solvers/trilinos_forward.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -76,16 +77,34 @@ namespace ContactDynamics
     {}
   };
 
-  /** The owners of one holder, called in the order of registration. */
-  template <typename Context>
+  /**
+   * The owners of one holder, called in the order of registration. `Owner`:
+   * their class, if the holder asks more of them than HistoryOwner does.
+   */
+  template <typename Context, typename Owner = HistoryOwner<Context>>
   class HistoryRegistry
   {
   public:
     /** The owner must outlive the registry. */
     void
-    add(HistoryOwner<Context> &owner)
+    add(Owner &owner)
     {
       owners.push_back(&owner);
+    }
+
+    /** An owner the registry keeps (one line registers a new feature). */
+    void
+    add(std::unique_ptr<Owner> owner)
+    {
+      owners.push_back(owner.get());
+      kept.push_back(std::move(owner));
+    }
+
+    /** The owners in the order of registration. */
+    const std::vector<Owner *> &
+    all() const
+    {
+      return owners;
     }
 
     void
@@ -143,10 +162,12 @@ namespace ContactDynamics
     clear()
     {
       owners.clear();
+      kept.clear();
     }
 
   private:
-    std::vector<HistoryOwner<Context> *> owners;
+    std::vector<Owner *>                owners;
+    std::vector<std::unique_ptr<Owner>> kept;
   };
 } // namespace ContactDynamics
 

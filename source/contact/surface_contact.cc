@@ -9,6 +9,7 @@
 
 #include <deal.II/dofs/dof_tools.h>
 
+#include <contact_dynamics/contact/capture_count.h>
 #include <contact_dynamics/contact/coordinates.h>
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/parallel.h>
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <initializer_list>
+#include <memory>
 #include <set>
 #include <sstream>
 
@@ -49,6 +51,7 @@ namespace ContactDynamics
                                                       &node_history,
                                                       &search})
       history.add(*owner);
+    history.add(std::make_unique<CaptureCount<dim>>(pairs));
   }
 
   template <int dim>
@@ -506,9 +509,13 @@ namespace ContactDynamics
   SecondaryNodes<dim>
   SurfaceContact<dim>::secondary_nodes(const unsigned int pair) const
   {
-    return {pairs[pair].secondary.reference,
-            pairs[pair].position,
-            pairs[pair].nodes};
+    SecondaryNodes<dim> nodes{pairs[pair].secondary.reference,
+                              pairs[pair].position,
+                              pairs[pair].nodes};
+    for (const ContactHistoryOwner *owner : history.all())
+      for (auto &column : owner->node_columns(pair))
+        nodes.columns.push_back(std::move(column));
+    return nodes;
   }
 
   template <int dim>

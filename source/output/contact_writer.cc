@@ -24,10 +24,10 @@ namespace ContactDynamics
     locate_monitored_nodes(contact);
     if (directory.empty() || !is_root(comm))
       return;
-    errno   = 0;
-    history = std::make_unique<std::ofstream>(history_name(),
-                                              append ? std::ios::app :
-                                                       std::ios::out);
+    errno = 0;
+    history =
+      std::make_unique<std::ofstream>(history_name(),
+                                      append ? std::ios::app : std::ios::out);
     check_written(*history, history_name());
     if (append)
       return;
@@ -122,7 +122,12 @@ namespace ContactDynamics
     out << "pair,node,x,y," << (dim == 3 ? "z," : "")
         << "gap,pressure,active,tangential_traction,"
         << (dim == 3 ? "tangential_traction_2," : "") << "stick,slip_rate"
-        << (dim == 3 ? ",slip_rate_2" : "") << '\n';
+        << (dim == 3 ? ",slip_rate_2" : "");
+    // then the columns of the owners of node history (the same per pair)
+    if (contact.n_pairs() > 0)
+      for (const auto &column : contact.secondary_nodes(0).columns)
+        out << ',' << column.name;
+    out << '\n';
     for (unsigned int p = 0; p < contact.n_pairs(); ++p)
       {
         const SecondaryNodes<dim> nodes = contact.secondary_nodes(p);
@@ -151,6 +156,8 @@ namespace ContactDynamics
             out << node.stick;
             for (unsigned int a = 0; a + 1 < dim; ++a)
               out << ',' << node.slip_rate[a];
+            for (const auto &column : nodes.columns)
+              out << ',' << column.values[j];
             out << '\n';
           }
       }

@@ -36,8 +36,30 @@ namespace ContactDynamics
     return "contact/pair " + std::to_string(p) + "/";
   }
 
-  using ContactHistoryOwner    = HistoryOwner<ContactHistoryContext>;
-  using ContactHistoryRegistry = HistoryRegistry<ContactHistoryContext>;
+  /** A column of contact_surface-*.csv: a value per secondary node. */
+  struct NodeColumn
+  {
+    std::string         name;
+    std::vector<double> values; // in the pair's node numbering
+  };
+
+  /** An owner of contact history; its history per node may be output. */
+  class ContactHistoryOwner : public HistoryOwner<ContactHistoryContext>
+  {
+  public:
+    /**
+     * Columns of contact_surface-*.csv for the secondary nodes of pair p,
+     * the same names for every pair; none by default.
+     */
+    virtual std::vector<NodeColumn>
+    node_columns(const unsigned int /*pair*/) const
+    {
+      return {};
+    }
+  };
+
+  using ContactHistoryRegistry =
+    HistoryRegistry<ContactHistoryContext, ContactHistoryOwner>;
 
   /**
    * Checkpoints: per-process lists of indices (`lists` on this process),

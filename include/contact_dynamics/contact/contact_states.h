@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <contact_dynamics/contact/contact_history.h>
 #include <contact_dynamics/mechanics/time_integrator.h>
 
 #include <array>
@@ -67,6 +68,8 @@ namespace ContactDynamics
     // at the last committed step (the reference ones before the first)
     const std::vector<Point<dim>>       &position;
     const std::vector<ContactNodeState> &states;
+    // what owners of history add per node (ContactHistoryOwner)
+    std::vector<NodeColumn> columns = {};
   };
 
 } // namespace ContactDynamics
