@@ -165,6 +165,18 @@ namespace ContactDynamics
   }
 
   template <int dim>
+  TrialState
+  Simulator<dim>::trial_state() const
+  {
+    return {u_ghost,
+            v_ghost,
+            integrator.velocity_factor(controller.dt()),
+            controller.dt(),
+            integrator.is_dynamic(),
+            integrator};
+  }
+
+  template <int dim>
   bool
   Simulator<dim>::is_held(const types::global_dof_index i) const
   {
@@ -264,13 +276,7 @@ namespace ContactDynamics
     if (contact)
       {
         TimerOutput::Scope tc(*timer, "contact assembly");
-        contact->assemble(TrialState{u_ghost,
-                                     v_ghost,
-                                     integrator.velocity_factor(
-                                       controller.dt()),
-                                     controller.dt(),
-                                     integrator.is_dynamic(),
-                                     integrator},
+        contact->assemble(trial_state(),
                           increment_constraints,
                           with_jacobian,
                           residual_out,

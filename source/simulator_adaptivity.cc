@@ -188,13 +188,7 @@ namespace ContactDynamics
     if (contact)
       {
         VectorType contact_residual(residual);
-        contact->assemble(TrialState{u_ghost,
-                                     v_ghost,
-                                     integrator.velocity_factor(
-                                       controller.dt()),
-                                     controller.dt(),
-                                     integrator.is_dynamic(),
-                                     integrator},
+        contact->assemble(trial_state(),
                           increment_constraints,
                           false,
                           contact_residual,

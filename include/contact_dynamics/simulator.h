@@ -176,12 +176,10 @@ namespace ContactDynamics
              MatrixType &jacobian) override;
     void
     apply_update(const VectorType &increment) override;
-
     bool
     has_multipliers() const override;
     std::vector<MultiplierGroup>
     multiplier_groups() const override;
-
     double
     iterate_norm() const override;
     bool
@@ -203,6 +201,9 @@ namespace ContactDynamics
     /** Whether the scheme balances the forces between the steps. */
     bool
     balances_between_steps() const;
+    /** The contact's view of the trial state u_ghost, v_ghost. */
+    TrialState
+    trial_state() const;
     /** force_old from residual_full_old and a. */
     void
     compute_old_forces();
@@ -294,7 +295,6 @@ namespace ContactDynamics
     /** `x` with the ghost entries this process reads, in `ghost`. */
     const VectorType &
     ghosted(const VectorType &x, VectorType &ghost) const;
-
     /** Screen output of the root process; a sink on the others. */
     std::ostream &
     screen_log();
