@@ -555,7 +555,7 @@ namespace ContactDynamics
     if (contact)
       {
         // u_ghost: the converged state, as the last assembly saw it
-        contact->commit_step(u_ghost, u);
+        contact->commit_step(u_ghost, u, false);
         previous_active_nodes        = committed_active_nodes;
         committed_active_nodes       = contact->n_active_nodes();
         const double velocity_update = apply_velocity_update();

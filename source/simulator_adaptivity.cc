@@ -100,8 +100,7 @@ namespace ContactDynamics
     const auto unknowns_before = dof_handler.n_dofs();
     // the committed state and the trial state of the step, and the mean
     // acceleration of the last step for the time-step error estimate
-    std::vector<VectorType *> moved = state.transferred_vectors();
-    controller.prepare_transfer(moved);
+    std::vector<VectorType *> moved = history.prepare_transfer();
     std::vector<VectorType>         old(moved.size());
     std::vector<const VectorType *> old_pointers;
     for (unsigned int i = 0; i < moved.size(); ++i)
@@ -194,7 +193,7 @@ namespace ContactDynamics
                           contact_residual,
                           jacobian,
                           residual_full_old);
-        contact->commit_step(u_ghost, u);
+        contact->commit_step(u_ghost, u, true);
       }
   }
 

@@ -62,9 +62,17 @@ namespace ContactDynamics
     transfer(const Context &)
     {}
 
-    /** Vectors on the degree-of-freedom layout that a mesh change moves. */
+    /** Vectors on the degree-of-freedom layout a checkpoint saves. */
     virtual void
     list_vectors(std::vector<TrilinosWrappers::MPI::Vector *> &)
+    {}
+
+    /**
+     * Before a mesh change: the vectors to interpolate to the new mesh (the
+     * others are rebuilt, or evaluated again, after it).
+     */
+    virtual void
+    prepare_transfer(std::vector<TrilinosWrappers::MPI::Vector *> &)
     {}
 
     /**
@@ -147,6 +155,15 @@ namespace ContactDynamics
     {
       for (auto *owner : owners)
         owner->reinit_vectors(layout);
+    }
+
+    std::vector<TrilinosWrappers::MPI::Vector *>
+    prepare_transfer() const
+    {
+      std::vector<TrilinosWrappers::MPI::Vector *> result;
+      for (auto *owner : owners)
+        owner->prepare_transfer(result);
+      return result;
     }
 
     std::vector<TrilinosWrappers::MPI::Vector *>

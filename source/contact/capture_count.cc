@@ -1,34 +1,26 @@
 #include <deal.II/base/exceptions.h>
 
 #include <contact_dynamics/contact/capture_count.h>
+#include <contact_dynamics/contact/coordinates.h>
 #include <contact_dynamics/output/checkpoint.h>
 
 namespace ContactDynamics
 {
   template <int dim>
-  typename CaptureCount<dim>::Key
-  CaptureCount<dim>::key(const Point<dim> &x)
-  {
-    Key k;
-    for (unsigned int d = 0; d < dim; ++d)
-      k[d] = x[d];
-    return k;
-  }
-
-  template <int dim>
   void
-  CaptureCount<dim>::commit(const ContactHistoryContext &)
+  CaptureCount<dim>::commit(const ContactHistoryContext &context)
   {
     // (node states are known on every process after an assembly)
     nodes.resize(pairs.size());
     for (unsigned int p = 0; p < pairs.size(); ++p)
       for (unsigned int j = 0; j < pairs[p].nodes.size(); ++j)
         {
-          Entry     &entry  = nodes[p][key(pairs[p].secondary.reference[j])];
+          Entry &entry =
+            nodes[p][position_key(pairs[p].secondary.reference[j])];
           const bool active = pairs[p].nodes[j].active;
-          if (active && entry.contact == out)
+          if (active && !entry.in_contact && !context.reevaluation)
             ++entry.captures;
-          entry.contact = active ? in : out;
+          entry.in_contact = active;
         }
   }
 
@@ -44,7 +36,7 @@ namespace ContactDynamics
           {
             values.insert(values.end(), x.begin(), x.end());
             values.push_back(entry.captures);
-            values.push_back(entry.contact);
+            values.push_back(entry.in_contact);
           }
         data.set(contact_pair_key(p) + "captures", values);
       }
@@ -60,7 +52,13 @@ namespace ContactDynamics
       {
         const std::string name = contact_pair_key(p) + "captures";
         if (!data.has(name))
-          continue;
+          {
+            // (the node states are loaded already)
+            for (unsigned int j = 0; j < pairs[p].nodes.size(); ++j)
+              nodes[p][position_key(pairs[p].secondary.reference[j])] =
+                {0, pairs[p].nodes[j].active};
+            continue;
+          }
         const auto &values = data.get(name);
         AssertThrow(values.size() % (dim + 2) == 0,
                     ExcMessage("The checkpoint entry '" + name + "' has " +
@@ -69,16 +67,10 @@ namespace ContactDynamics
                                std::to_string(dim + 2) + "."));
         for (std::size_t i = 0; i < values.size(); i += dim + 2)
           {
-            Key x;
+            std::array<double, dim> x;
             std::copy(&values[i], &values[i] + dim, x.begin());
-            AssertThrow(values[i + dim + 1] >= out &&
-                          values[i + dim + 1] <= unknown,
-                        ExcMessage("The checkpoint entry '" + name +
-                                   "' has a contact state " +
-                                   std::to_string(values[i + dim + 1]) +
-                                   " (0, 1 or 2 expected)."));
             nodes[p][x] = {static_cast<unsigned int>(values[i + dim]),
-                           static_cast<Contact>(values[i + dim + 1])};
+                           values[i + dim + 1] != 0};
           }
       }
   }
@@ -87,18 +79,13 @@ namespace ContactDynamics
   void
   CaptureCount<dim>::transfer(const ContactHistoryContext &)
   {
-    if (nodes.empty()) // before the first commit
-      return;
-    nodes.resize(pairs.size());
-    for (unsigned int p = 0; p < pairs.size(); ++p)
+    for (unsigned int p = 0; p < nodes.size() && p < pairs.size(); ++p)
       {
-        std::map<Key, Entry> kept;
+        std::map<std::array<double, dim>, Entry> kept;
         for (const auto &x : pairs[p].secondary.reference)
-          {
-            const auto old = nodes[p].find(key(x));
-            kept[key(x)] =
-              old != nodes[p].end() ? old->second : Entry{0, unknown};
-          }
+          if (const auto old = nodes[p].find(position_key(x));
+              old != nodes[p].end())
+            kept.insert(*old);
         nodes[p] = std::move(kept);
       }
   }
@@ -111,7 +98,7 @@ namespace ContactDynamics
     if (p < nodes.size())
       for (unsigned int j = 0; j < column.values.size(); ++j)
         if (const auto entry =
-              nodes[p].find(key(pairs[p].secondary.reference[j]));
+              nodes[p].find(position_key(pairs[p].secondary.reference[j]));
             entry != nodes[p].end())
           column.values[j] = entry->second.captures;
     return {column};

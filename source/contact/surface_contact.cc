@@ -343,11 +343,14 @@ namespace ContactDynamics
 
   template <int dim>
   void
-  SurfaceContact<dim>::commit_step(const VectorType &u, const VectorType &old_u)
+  SurfaceContact<dim>::commit_step(const VectorType &u,
+                                   const VectorType &old_u,
+                                   const bool        reevaluation)
   {
     ContactHistoryContext context;
-    context.u     = &u;
-    context.old_u = &old_u;
+    context.u            = &u;
+    context.old_u        = &old_u;
+    context.reevaluation = reevaluation;
     history.commit(context);
   }
 

@@ -43,9 +43,7 @@ namespace ContactDynamics
         std::map<std::array<double, dim>, unsigned int> index;
         for (unsigned int j = 0; j < nodes.size(); ++j)
           {
-            std::array<double, dim> x;
-            std::copy(nodes[j].begin_raw(), nodes[j].end_raw(), x.begin());
-            AssertThrow(index.emplace(x, j).second,
+            AssertThrow(index.emplace(position_key(nodes[j]), j).second,
                         ExcMessage("The contact pair '" +
                                    contact.pairs[p].name +
                                    "' has two secondary nodes at " +
@@ -55,11 +53,10 @@ namespace ContactDynamics
           }
         for (unsigned int k = 0; k < nodes.size(); ++k)
           {
-            std::array<double, dim> x;
-            Point<dim>              where;
+            Point<dim> where;
             for (unsigned int d = 0; d < dim; ++d)
-              where[d] = x[d] = saved[dim * k + d];
-            const auto it = index.find(x);
+              where[d] = saved[dim * k + d];
+            const auto it = index.find(position_key(where));
             AssertThrow(it != index.end(),
                         ExcMessage("The checkpoint's contact pair '" +
                                    contact.pairs[p].name +

@@ -33,24 +33,25 @@ namespace ContactDynamics
 
     /**
      * Counts the nodes in contact now that were not at the last commit (a
-     * node in contact at the first step counts one; a node a mesh change
-     * created counts from its first commit on).
+     * node in contact at the first step counts one). The committed state
+     * evaluated again on a new mesh only records which nodes are in contact
+     * there: a node the refinement created counts from then on.
      */
     void
-    commit(const ContactHistoryContext &) override;
+    commit(const ContactHistoryContext &context) override;
 
-    /** Per pair: per counted node its reference position, count, state. */
+    /** Per pair: per node its reference position, count and contact. */
     void
     save(CheckpointData &data, const ContactHistoryContext &) const override;
 
     /**
      * What save() wrote; a checkpoint of an earlier version without counts
-     * starts them at zero.
+     * starts them at zero, with the contact of the loaded node states.
      */
     void
     load(const CheckpointData &data, const ContactHistoryContext &) override;
 
-    /** Keeps the nodes of the new mesh that the old one had. */
+    /** Forgets the nodes the new mesh does not have. */
     void
     transfer(const ContactHistoryContext &) override;
 
@@ -58,26 +59,14 @@ namespace ContactDynamics
     node_columns(const unsigned int pair) const override;
 
   private:
-    using Key = std::array<double, dim>;
-
-    enum Contact
-    {
-      out     = 0,
-      in      = 1,
-      unknown = 2 // a node new since a mesh change, until its first commit
-    };
-
     struct Entry
     {
-      unsigned int captures = 0;
-      Contact      contact  = out;
+      unsigned int captures   = 0;
+      bool         in_contact = false; // at the last commit
     };
 
-    static Key
-    key(const Point<dim> &x);
-
-    const std::vector<ContactPairData<dim>> &pairs;
-    std::vector<std::map<Key, Entry>>        nodes; // per pair
+    const std::vector<ContactPairData<dim>>              &pairs;
+    std::vector<std::map<std::array<double, dim>, Entry>> nodes; // per pair
   };
 } // namespace ContactDynamics
 

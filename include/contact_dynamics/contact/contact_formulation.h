@@ -163,10 +163,14 @@ namespace ContactDynamics
 
     /**
      * The step converged at the state `u` of the last assemble(): keep the
-     * history the next step needs; `old_u` is the state before.
+     * history the next step needs; `old_u` is the state before. With
+     * `reevaluation`, no step was taken: the committed state was assembled
+     * again on a new mesh (remesh()).
      */
     virtual void
-    commit_step(const VectorType &u, const VectorType &old_u) = 0;
+    commit_step(const VectorType &u,
+                const VectorType &old_u,
+                const bool        reevaluation) = 0;
 
     /**
      * Checkpoints: vectors on the degrees of freedom that the history of the

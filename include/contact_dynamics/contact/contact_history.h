@@ -23,6 +23,9 @@ namespace ContactDynamics
     const TrilinosWrappers::MPI::Vector          *u         = nullptr;
     const TrilinosWrappers::MPI::Vector          *old_u     = nullptr;
     const std::vector<std::vector<unsigned int>> *node_maps = nullptr;
+    // commit: the committed state evaluated again on a new mesh (after
+    // transfer()), not a new step; an owner that counts steps skips it
+    bool reevaluation = false;
 
     /** Whether every pair's nodes are numbered as saved (load). */
     bool

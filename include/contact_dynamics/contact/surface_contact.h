@@ -106,7 +106,9 @@ namespace ContactDynamics
     start_step() override;
 
     void
-    commit_step(const VectorType &u, const VectorType &old_u) override;
+    commit_step(const VectorType &u,
+                const VectorType &old_u,
+                const bool        reevaluation) override;
 
     std::vector<VectorType *>
     history_vectors() override;

@@ -65,13 +65,14 @@ namespace ContactDynamics
     }
 
     /**
-     * The vectors a mesh change interpolates: the committed state and the
-     * trial displacement of the step (its forces are evaluated again).
+     * The committed state and the trial displacement of the step (its
+     * forces are evaluated again).
      */
-    std::vector<VectorType *>
-    transferred_vectors()
+    void
+    prepare_transfer(std::vector<VectorType *> &vectors) override
     {
-      return {&u, &v, &a, &u_new};
+      for (VectorType *x : {&u, &v, &a, &u_new})
+        vectors.push_back(x);
     }
 
     // committed at t_n, and the bulk forces of that state

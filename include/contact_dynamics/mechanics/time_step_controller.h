@@ -162,7 +162,7 @@ namespace ContactDynamics
      * mean acceleration, if the estimate will use it).
      */
     void
-    prepare_transfer(std::vector<VectorType *> &vectors);
+    prepare_transfer(std::vector<VectorType *> &vectors) override;
 
     /** After the mesh change that prepare_transfer() began. */
     void
