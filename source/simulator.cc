@@ -140,7 +140,7 @@ namespace ContactDynamics
   unsigned int
   Simulator<dim>::n_mesh_changes() const
   {
-    return mesh_changes;
+    return adaptation.n_mesh_changes();
   }
 
   template <int dim>
@@ -181,16 +181,6 @@ namespace ContactDynamics
   Simulator<dim>::is_held(const types::global_dof_index i) const
   {
     return held_dofs.is_element(i);
-  }
-
-  template <int dim>
-  bool
-  Simulator<dim>::adaptation_due(const unsigned int completed,
-                                 const unsigned int active,
-                                 const unsigned int active_before) const
-  {
-    return completed % refinement.interval == 0 ||
-           (refinement.on_contact_change && active != active_before);
   }
 
   template <int dim>
@@ -452,9 +442,8 @@ namespace ContactDynamics
         // on it from its transferred trial state
         if (!result.converged || !refinement.adapt_to_contact ||
             pass >= refinement.passes_per_step ||
-            !adaptation_due(step + 1,
-                            contact ? contact->n_active_nodes() : 0,
-                            committed_active_nodes) ||
+            !adaptation.due_within(step + 1,
+                                   contact ? contact->n_active_nodes() : 0) ||
             !adapt_mesh())
           break;
         solved.adapted    = true;
@@ -556,8 +545,6 @@ namespace ContactDynamics
       {
         // u_ghost: the converged state, as the last assembly saw it
         contact->commit_step(u_ghost, u, false);
-        previous_active_nodes        = committed_active_nodes;
-        committed_active_nodes       = contact->n_active_nodes();
         const double velocity_update = apply_velocity_update();
         energy_account.add_contact(velocity_update,
                                    contact->dissipated_energy(),
@@ -654,7 +641,7 @@ namespace ContactDynamics
     // the mesh for the next step (without solving this one again; `step`
     // is the one just completed)
     if (refinement.adapt_to_contact && refinement.passes_per_step == 0 &&
-        adaptation_due(step, committed_active_nodes, previous_active_nodes))
+        adaptation.due_after(step))
       adapt_mesh();
     controller.accepted(dt_try, screen_log());
     const unsigned int interval = output_parameters.checkpoint_interval;

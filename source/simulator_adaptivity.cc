@@ -52,13 +52,12 @@ namespace ContactDynamics
                                                            zone,
                                                            refinement,
                                                            base_level);
-      if (dropped > 0 && !cell_limit_reported)
+      if (adaptation.cell_limit_reached(dropped))
         pcout << "  Mesh refinement/Maximum cells = "
               << refinement.maximum_cells << " reached at t = " << time << ": "
               << dropped
               << " cells near the contact are not refined (reported once)"
               << std::endl;
-      cell_limit_reported = cell_limit_reported || dropped > 0;
     }
     return refine_and_transfer();
   }
@@ -100,7 +99,7 @@ namespace ContactDynamics
     const auto unknowns_before = dof_handler.n_dofs();
     // the committed state and the trial state of the step, and the mean
     // acceleration of the last step for the time-step error estimate
-    std::vector<VectorType *> moved = history.prepare_transfer();
+    std::vector<VectorType *>       moved = history.prepare_transfer();
     std::vector<VectorType>         old(moved.size());
     std::vector<const VectorType *> old_pointers;
     for (unsigned int i = 0; i < moved.size(); ++i)
@@ -144,7 +143,6 @@ namespace ContactDynamics
     ghosted(u, u_ghost);
     const double energy_after =
       energy_account.after_mesh_change(*mechanics, v, u_ghost, energy_before);
-    ++mesh_changes;
     history.transfer(RunContext());
     pcout << "  mesh at t = " << time << ": " << cells_before << " -> "
           << tria->n_global_active_cells() << " cells, " << unknowns_before

@@ -224,12 +224,7 @@ namespace ContactDynamics
     data.set("step", step);
     // the controller, the energies
     history.save(data, RunContext());
-    data.set("mesh",
-             {double(mesh_changes),
-              double(cell_limit_reported),
-              double(committed_active_nodes),
-              double(previous_active_nodes),
-              double(last_vtu_step)});
+    data.set("output/last vtu step", last_vtu_step);
     data.set("wall time", wall_time_before + wall_timer.wall_time());
     data.set("coarse mesh", coarse_mesh_signature(*triangulation));
     data.set_text("parameters", parameters_text);
@@ -396,14 +391,12 @@ namespace ContactDynamics
              data.value("cells"),
              triangulation->n_global_active_cells());
 
-    time                   = data.value("time");
-    step                   = data.value("step");
-    const auto &mesh       = data.get("mesh", 5);
-    mesh_changes           = mesh[0];
-    cell_limit_reported    = mesh[1] != 0;
-    committed_active_nodes = mesh[2];
-    previous_active_nodes  = mesh[3];
-    last_vtu_step          = mesh[4];
+    time = data.value("time");
+    step = data.value("step");
+    // (before issue 38 last in `mesh`)
+    last_vtu_step = data.has("output/last vtu step") ?
+                      data.value("output/last vtu step") :
+                      data.get("mesh", 5)[4];
     // the controller, the energies
     history.load(data, RunContext{checkpoint});
 

@@ -158,7 +158,7 @@ namespace ContactDynamics
     if (refinement.adapt_to_contact)
       for (const double x : {double(triangulation->n_global_active_cells()),
                              double(dof_handler.n_dofs()),
-                             double(mesh_changes),
+                             double(adaptation.n_mesh_changes()),
                              energies.transfer})
         row.push_back(x);
     if (integrator.error_tolerance() > 0)

@@ -40,6 +40,10 @@ namespace ContactDynamics
                             std::ostream     &screen,
                             const MPI_Comm    comm)
     : pcout(screen, is_root(comm))
+    , adaptation(refinement,
+                 [this]() {
+                   return contact ? contact->n_active_nodes() : 0;
+                 })
     , mpi_communicator(comm)
   {
     {
@@ -102,6 +106,7 @@ namespace ContactDynamics
     history.add(state);
     history.add(controller);
     history.add(energy_account);
+    history.add(adaptation);
     timer = std::make_unique<TimerOutput>(comm,
                                           pcout,
                                           TimerOutput::never,

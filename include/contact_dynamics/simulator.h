@@ -21,6 +21,7 @@
 #include <contact_dynamics/mechanics/solid_mechanics.h>
 #include <contact_dynamics/mechanics/time_integrator.h>
 #include <contact_dynamics/mechanics/time_step_controller.h>
+#include <contact_dynamics/mesh/adaptation_schedule.h>
 #include <contact_dynamics/mesh/contact_refinement.h>
 #include <contact_dynamics/output/contact_writer.h>
 #include <contact_dynamics/output/postprocessing.h>
@@ -322,17 +323,8 @@ namespace ContactDynamics
     NewtonSolver         newton;
     OutputParameters     output_parameters;
     RefinementParameters refinement;
-    unsigned int         base_level          = 0; // of the initial mesh
-    unsigned int         mesh_changes        = 0;
-    bool                 cell_limit_reported = false;
-    // active contact nodes at the last and the one before committed steps
-    unsigned int committed_active_nodes = 0, previous_active_nodes = 0;
-    /** Whether the mesh is to be adapted after step `completed` (Interval,
-     * On contact change: `active` against `active_before`). */
-    bool
-    adaptation_due(const unsigned int completed,
-                   const unsigned int active,
-                   const unsigned int active_before) const;
+    unsigned int         base_level = 0; // of the initial mesh
+    AdaptationSchedule   adaptation;
 
     MPI_Comm                                          mpi_communicator;
     ParallelParameters                                parallel_parameters;
