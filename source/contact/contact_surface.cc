@@ -5,6 +5,7 @@
 
 #include <contact_dynamics/contact/clipping_geometry.h>
 #include <contact_dynamics/contact/contact_surface.h>
+#include <contact_dynamics/parallel.h>
 
 #include <algorithm>
 #include <map>
@@ -20,14 +21,14 @@ namespace ContactDynamics
      * (then the order is reversed).
      */
     template <int dim>
-    std::vector<double>
+    Message
     owned_face_records(const DoFHandler<dim>                 &dof_handler,
                        const std::vector<types::boundary_id> &ids,
                        const unsigned int                     n_node_components)
     {
       const auto            &fe  = dof_handler.get_fe();
       constexpr unsigned int n_v = ContactSurface<dim>::nodes_per_face;
-      std::vector<double>    records;
+      Message                records;
       std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -54,13 +55,13 @@ namespace ContactDynamics
                                        cell->vertex(v[2]) - cell->vertex(v[0]));
                 for (const unsigned int cell_vertex : v)
                   for (unsigned int d = 0; d < dim; ++d)
-                    records.push_back(cell->vertex(cell_vertex)[d]);
+                    records.write(cell->vertex(cell_vertex)[d]);
                 for (const unsigned int cell_vertex : v)
                   for (unsigned int c = 0; c < n_node_components; ++c)
-                    records.push_back(
+                    records.write_index(
                       cell_dofs[fe.component_to_system_index(c, cell_vertex)]);
-                records.push_back(cell->measure() / cell->face(f)->measure());
-                records.push_back(
+                records.write(cell->measure() / cell->face(f)->measure());
+                records.write_index(
                   n * (cell->face(f)->center() - cell->center()) < 0);
               }
       return records;
@@ -68,35 +69,43 @@ namespace ContactDynamics
 
     /**
      * The integrals of the nodes' shape functions over the faces in the
-     * reference configuration.
+     * reference configuration: on segments,
      */
-    template <int dim, typename Faces>
+    template <typename Faces>
     std::vector<double>
-    reference_weights(const std::vector<Point<dim>> &reference,
-                      const Faces                   &faces)
+    reference_weights(const std::vector<Point<2>> &reference,
+                      const Faces                 &faces)
     {
       std::vector<double> reference_weight(reference.size(), 0.);
       for (const auto &face : faces)
-        if constexpr (dim == 2)
-          {
-            const double length =
-              reference[face[0]].distance(reference[face[1]]);
-            reference_weight[face[0]] += length / 2;
-            reference_weight[face[1]] += length / 2;
-          }
-        else
-          {
-            std::array<Tensor<1, 3>, 4> x;
-            for (unsigned int v = 0; v < 4; ++v)
-              for (unsigned int d = 0; d < dim; ++d)
-                x[v][d] = reference[face[v]][d];
-            for (const auto &q : ClippingGeometry::face_points(x))
-              {
-                const auto N = ClippingGeometry::shape(q.xi, q.eta);
-                for (unsigned int v = 0; v < 4; ++v)
-                  reference_weight[face[v]] += q.weight * N[v];
-              }
-          }
+        {
+          const double length = reference[face[0]].distance(reference[face[1]]);
+          reference_weight[face[0]] += length / 2;
+          reference_weight[face[1]] += length / 2;
+        }
+      return reference_weight;
+    }
+
+    /** and on bilinear quadrilaterals. */
+    template <typename Faces>
+    std::vector<double>
+    reference_weights(const std::vector<Point<3>> &reference,
+                      const Faces                 &faces)
+    {
+      std::vector<double> reference_weight(reference.size(), 0.);
+      for (const auto &face : faces)
+        {
+          std::array<Tensor<1, 3>, 4> x;
+          for (unsigned int v = 0; v < 4; ++v)
+            for (unsigned int d = 0; d < 3; ++d)
+              x[v][d] = reference[face[v]][d];
+          for (const auto &q : ClippingGeometry::face_points(x))
+            {
+              const auto N = ClippingGeometry::shape(q.xi, q.eta);
+              for (unsigned int v = 0; v < 4; ++v)
+                reference_weight[face[v]] += q.weight * N[v];
+            }
+        }
       return reference_weight;
     }
   } // namespace
@@ -119,56 +128,48 @@ namespace ContactDynamics
     // distributed mesh. A record is the nodes' coordinates, their dofs,
     // depth, and whether the face's normal by its node order points into
     // the cell (then the order is reversed).
-    constexpr unsigned int n_v     = nodes_per_face;
-    const unsigned int record_size = n_v * dim + n_v * n_node_components + 2;
-    const std::vector<double> records =
-      owned_face_records(dof_handler, ids, n_node_components);
-    const auto mpi_communicator = dof_handler.get_communicator();
-    const std::vector<std::vector<double>> all_records =
-      Utilities::MPI::n_mpi_processes(mpi_communicator) > 1 ?
-        Utilities::MPI::all_gather(mpi_communicator, records) :
-        std::vector<std::vector<double>>{records};
-
+    constexpr unsigned int n_v = nodes_per_face;
     // nodes are numbered in the order they first appear; a node is known
     // by its first dof
     std::map<types::global_dof_index, unsigned int> dof_to_node;
-    for (const auto &part : all_records)
-      for (unsigned int r = 0; r + record_size <= part.size(); r += record_size)
+    const auto read_face = [&](Message &record) {
+      std::array<Point<dim>, n_v> x;
+      for (auto &point : x)
+        for (unsigned int d = 0; d < dim; ++d)
+          point[d] = record.read();
+      std::array<std::vector<types::global_dof_index>, n_v> node_dofs;
+      for (auto &list : node_dofs)
+        for (unsigned int c = 0; c < n_node_components; ++c)
+          list.push_back(record.read_index());
+      std::array<unsigned int, n_v> face_nodes;
+      for (unsigned int v = 0; v < n_v; ++v)
         {
-          const double                 *record = &part[r];
-          std::array<unsigned int, n_v> face_nodes;
-          for (unsigned int v = 0; v < n_v; ++v)
+          auto it = dof_to_node.find(node_dofs[v][0]);
+          if (it == dof_to_node.end())
             {
-              const double *node_dofs =
-                record + n_v * dim + v * n_node_components;
-              const auto key =
-                static_cast<types::global_dof_index>(node_dofs[0]);
-              auto it = dof_to_node.find(key);
-              if (it == dof_to_node.end())
-                {
-                  it = dof_to_node.emplace(key, reference.size()).first;
-                  Point<dim> x;
-                  for (unsigned int d = 0; d < dim; ++d)
-                    x[d] = record[v * dim + d];
-                  reference.push_back(x);
-                  dofs.emplace_back();
-                  for (unsigned int c = 0; c < n_node_components; ++c)
-                    dofs.back().push_back(
-                      static_cast<types::global_dof_index>(node_dofs[c]));
-                  node_faces.emplace_back();
-                }
-              face_nodes[v] = it->second;
+              it = dof_to_node.emplace(node_dofs[v][0], reference.size()).first;
+              reference.push_back(x[v]);
+              dofs.push_back(node_dofs[v]);
+              node_faces.emplace_back();
             }
-          // reversed: in 3-D, exchanging nodes 1 and 2 exchanges xi and eta
-          if (record[record_size - 1] != 0)
-            std::swap(face_nodes[0 + (dim == 3)], face_nodes[1 + (dim == 3)]);
-          for (const unsigned int node : face_nodes)
-            node_faces[node].push_back(faces.size());
-          faces.push_back(face_nodes);
-          depth.push_back(record[record_size - 2]);
+          face_nodes[v] = it->second;
         }
+      depth.push_back(record.read());
+      // reversed: in 3-D, exchanging nodes 1 and 2 exchanges xi and eta
+      if (record.read_index() != 0)
+        std::swap(face_nodes[0 + (dim == 3)], face_nodes[1 + (dim == 3)]);
+      for (const unsigned int node : face_nodes)
+        node_faces[node].push_back(faces.size());
+      faces.push_back(face_nodes);
+    };
+    gather_messages(dof_handler.get_communicator(),
+                    owned_face_records(dof_handler, ids, n_node_components),
+                    [&](Message &part) {
+                      while (!part.at_end())
+                        read_face(part);
+                    });
 
-    reference_weight = reference_weights<dim>(reference, faces);
+    reference_weight = reference_weights(reference, faces);
     if (dim == 2)
       for (const auto &nf : node_faces)
         AssertThrow(nf.size() <= 2,

@@ -90,40 +90,17 @@ namespace ContactDynamics
                                                      const unsigned int node,
                                                      const VectorType  &u) const
   {
+    // 2-D: the change of the length around the node (3-D:
+    // node_to_segment_contact_3d.cc)
     const auto &surface = pair.secondary;
-    if constexpr (dim == 2)
+    double      current = 0;
+    for (const unsigned int face : surface.node_faces[node])
       {
-        double current = 0;
-        for (const unsigned int face : surface.node_faces[node])
-          {
-            double length;
-            surface.face_box(face, u, length);
-            current += length / 2;
-          }
-        return current > 0 ? surface.reference_weight[node] / current : 1.;
+        double length;
+        surface.face_box(face, u, length);
+        current += length / 2;
       }
-    else
-      {
-        // the change of the area around the node: a quarter of each face's
-        // area (half the cross product of its diagonals), now and in the
-        // reference configuration (reference_weight is integral N_j, which
-        // differs from that on faces that are not parallelograms)
-        double current = 0, reference = 0;
-        for (const unsigned int face : surface.node_faces[node])
-          {
-            const auto &f       = surface.faces[face];
-            const auto  quarter = [&](const auto &x) {
-              return cross_product_3d(x(3) - x(0), x(2) - x(1)).norm() / 8;
-            };
-            current += quarter([&](const unsigned int a) {
-              return surface.position(f[a], u);
-            });
-            reference += quarter([&](const unsigned int a) {
-              return surface.reference[f[a]];
-            });
-          }
-        return current > 0 ? reference / current : 1.;
-      }
+    return current > 0 ? surface.reference_weight[node] / current : 1.;
   }
 
   template <int dim>

@@ -300,6 +300,34 @@ namespace ContactDynamics
 
 
   template <>
+  double
+  NodeToSegmentContact<3>::traction_per_multiplier(const PairData    &pair,
+                                                   const unsigned int node,
+                                                   const VectorType  &u) const
+  {
+    // the change of the area around the node: a quarter of each face's
+    // area (half the cross product of its diagonals), now and in the
+    // reference configuration (reference_weight is integral N_j, which
+    // differs from that on faces that are not parallelograms)
+    const auto &surface = pair.secondary;
+    double      current = 0, reference = 0;
+    for (const unsigned int face : surface.node_faces[node])
+      {
+        const auto &f       = surface.faces[face];
+        const auto  quarter = [&](const auto &x) {
+          return cross_product_3d(x(3) - x(0), x(2) - x(1)).norm() / 8;
+        };
+        current += quarter([&](const unsigned int a) {
+          return surface.position(f[a], u);
+        });
+        reference += quarter([&](const unsigned int a) {
+          return surface.reference[f[a]];
+        });
+      }
+    return current > 0 ? reference / current : 1.;
+  }
+
+  template <>
   void
   NodeToSegmentContact<3>::assemble_patch(PairData          &pair,
                                           const unsigned int j,

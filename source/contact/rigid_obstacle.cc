@@ -60,6 +60,37 @@ namespace ContactDynamics
         x /= norm;
       return unit;
     }
+
+    // R: the rotation with cosine c and sine s, in 2-D in the plane,
+    void
+    set_rotation(const double c,
+                 const double s,
+                 const Tensor<1, 3> &,
+                 Tensor<2, 2> &R)
+    {
+      R[0][0] = c;
+      R[0][1] = -s;
+      R[1][0] = s;
+      R[1][1] = c;
+    }
+
+    // in 3-D about the unit axis k (Rodrigues: c I + s [k]x + (1 - c) k k^T)
+    void
+    set_rotation(const double        c,
+                 const double        s,
+                 const Tensor<1, 3> &k,
+                 Tensor<2, 3>       &R)
+    {
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          R[i][j] = (i == j ? c : 0.) + (1 - c) * k[i] * k[j];
+      R[0][1] -= s * k[2];
+      R[0][2] += s * k[1];
+      R[1][0] += s * k[2];
+      R[1][2] -= s * k[0];
+      R[2][0] -= s * k[1];
+      R[2][1] += s * k[0];
+    }
   } // namespace
 
   void
@@ -178,27 +209,7 @@ namespace ContactDynamics
     const double   theta = angle->value(Point<1>(t));
     const double   c = std::cos(theta), s = std::sin(theta);
     Tensor<2, dim> R;
-    if constexpr (dim == 2)
-      {
-        R[0][0] = c;
-        R[0][1] = -s;
-        R[1][0] = s;
-        R[1][1] = c;
-      }
-    else
-      {
-        // Rodrigues: c I + s [k]x + (1 - c) k k^T
-        const Tensor<1, 3> &k = rotation_axis;
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int j = 0; j < 3; ++j)
-            R[i][j] = (i == j ? c : 0.) + (1 - c) * k[i] * k[j];
-        R[0][1] -= s * k[2];
-        R[0][2] += s * k[1];
-        R[1][0] += s * k[2];
-        R[1][2] -= s * k[0];
-        R[2][0] -= s * k[1];
-        R[2][1] += s * k[0];
-      }
+    set_rotation(c, s, rotation_axis, R);
     return R;
   }
 

@@ -185,13 +185,19 @@ namespace ContactDynamics
     // (face_memory.trial, as the 3-D projection reads it)
     std::map<unsigned int, std::vector<unsigned int>> &trial_face;
   };
-  // 3-D (node_to_segment_contact_3d.cc): closest points on bilinear faces
+  // 3-D (node_to_segment_contact_3d.cc): closest points on bilinear faces,
+  // the change of the area around a node
   template <>
   void
   NodeToSegmentContact<3>::assemble_patch(PairData          &pair,
                                           const unsigned int patch,
                                           const TrialState  &state,
                                           PatchForces       &forces);
+  template <>
+  double
+  NodeToSegmentContact<3>::traction_per_multiplier(const PairData    &pair,
+                                                   const unsigned int node,
+                                                   const VectorType  &u) const;
 } // namespace ContactDynamics
 
 #endif
