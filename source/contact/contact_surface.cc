@@ -67,46 +67,34 @@ namespace ContactDynamics
       return records;
     }
 
-    /**
-     * The integrals of the nodes' shape functions over the faces in the
-     * reference configuration: on segments,
-     */
-    template <typename Faces>
-    std::vector<double>
-    reference_weights(const std::vector<Point<2>> &reference,
-                      const Faces                 &faces)
+    // Adds the integrals of the nodes' shape functions over a face in the
+    // reference configuration: a segment's,
+    void
+    add_face_weights(const std::vector<Point<2>>       &reference,
+                     const std::array<unsigned int, 2> &face,
+                     std::vector<double>               &weights)
     {
-      std::vector<double> reference_weight(reference.size(), 0.);
-      for (const auto &face : faces)
-        {
-          const double length = reference[face[0]].distance(reference[face[1]]);
-          reference_weight[face[0]] += length / 2;
-          reference_weight[face[1]] += length / 2;
-        }
-      return reference_weight;
+      const double length = reference[face[0]].distance(reference[face[1]]);
+      weights[face[0]] += length / 2;
+      weights[face[1]] += length / 2;
     }
 
-    /** and on bilinear quadrilaterals. */
-    template <typename Faces>
-    std::vector<double>
-    reference_weights(const std::vector<Point<3>> &reference,
-                      const Faces                 &faces)
+    // a bilinear quadrilateral's
+    void
+    add_face_weights(const std::vector<Point<3>>       &reference,
+                     const std::array<unsigned int, 4> &face,
+                     std::vector<double>               &weights)
     {
-      std::vector<double> reference_weight(reference.size(), 0.);
-      for (const auto &face : faces)
+      std::array<Tensor<1, 3>, 4> x;
+      for (unsigned int v = 0; v < 4; ++v)
+        for (unsigned int d = 0; d < 3; ++d)
+          x[v][d] = reference[face[v]][d];
+      for (const auto &q : ClippingGeometry::face_points(x))
         {
-          std::array<Tensor<1, 3>, 4> x;
+          const auto N = ClippingGeometry::shape(q.xi, q.eta);
           for (unsigned int v = 0; v < 4; ++v)
-            for (unsigned int d = 0; d < 3; ++d)
-              x[v][d] = reference[face[v]][d];
-          for (const auto &q : ClippingGeometry::face_points(x))
-            {
-              const auto N = ClippingGeometry::shape(q.xi, q.eta);
-              for (unsigned int v = 0; v < 4; ++v)
-                reference_weight[face[v]] += q.weight * N[v];
-            }
+            weights[face[v]] += q.weight * N[v];
         }
-      return reference_weight;
     }
   } // namespace
 
@@ -169,7 +157,9 @@ namespace ContactDynamics
                         read_face(part);
                     });
 
-    reference_weight = reference_weights(reference, faces);
+    reference_weight.assign(reference.size(), 0.);
+    for (const auto &face : faces)
+      add_face_weights(reference, face, reference_weight);
     if (dim == 2)
       for (const auto &nf : node_faces)
         AssertThrow(nf.size() <= 2,
