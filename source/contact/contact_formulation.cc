@@ -313,7 +313,8 @@ namespace ContactDynamics
                       formulation_names.name(defaults.formulation),
                       formulation_names.pattern(),
                       "'none': the bodies do not interact (no multiplier "
-                      "unknowns, no cost). 'mortar': dual mortar "
+                      "unknowns, no cost; Pairs and Rigid obstacles must "
+                      "then be empty). 'mortar': dual mortar "
                       "segment-to-segment contact with Lagrange multipliers "
                       "on the secondary surfaces (2-D and 3-D). 'nts': "
                       "node-to-segment contact, each secondary node "
@@ -372,6 +373,21 @@ namespace ContactDynamics
                 ExcMessage("Contact/Formulation = " +
                            formulation_names.name(formulation) +
                            " needs at least one pair in 'Contact/Pairs'."));
+    // (ignored, the bodies would pass through each other and the obstacles)
+    AssertThrow(formulation != Formulation::none ||
+                  (pairs.empty() && obstacles.empty()),
+                ExcMessage(
+                  "Contact/Formulation = none enforces no contact, but " +
+                  (pairs.empty() ? "" :
+                                   "'Contact/Pairs' = '" + prm.get("Pairs") +
+                                     "'" + (obstacles.empty() ? "" : " and ")) +
+                  (obstacles.empty() ?
+                     "" :
+                     "'Contact/Rigid obstacles' = '" +
+                       prm.get("Rigid obstacles") + "'") +
+                  (!pairs.empty() && !obstacles.empty() ? " are" : " is") +
+                  " set: choose Formulation = mortar or nts, or remove " +
+                  (!pairs.empty() && !obstacles.empty() ? "them." : "it.")));
 
     allow_initial_penetration =
       penetration_names.value(prm.get("Initial penetration"));
