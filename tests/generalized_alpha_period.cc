@@ -194,6 +194,22 @@ main()
         dealii::deallog << "  spectral radius at omega dt = 1e12: "
                         << spectral_radius << std::endl;
 
+      // a numerical-dissipation column exactly for the schemes whose
+      // amplification damps the highest frequencies
+      {
+        ContactDynamics::TimeIntegrator integrator;
+        prm.enter_subsection("Time integration");
+        integrator.parse_parameters(prm);
+        prm.leave_subsection();
+        dealii::deallog << "  numerical dissipation column "
+                        << (integrator.is_dissipative() ? "written" : "omitted")
+                        << ((spectral_radius < 1 - 1e-6) ==
+                                integrator.is_dissipative() ?
+                              ", as the spectral radius says" :
+                              ", AGAINST the spectral radius")
+                        << std::endl;
+      }
+
       // the energy the recursion's motion lost (E ~ omega^2 u^2 + v^2) is
       // what the code reports as numerical dissipation
       const auto  &energy = simulator.energy();

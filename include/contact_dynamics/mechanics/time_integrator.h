@@ -58,15 +58,17 @@ namespace ContactDynamics
     }
 
     /**
-     * Whether the scheme dissipates energy in the bulk (anything but the
-     * trapezoidal rule): the statistics then report this numerical
-     * dissipation in a column of its own.
+     * Whether the scheme dissipates energy in the bulk: the statistics then
+     * report this numerical dissipation in a column of its own. Not the
+     * trapezoidal rule (beta = 1/4, gamma = 1/2), nor generalized-alpha
+     * with alpha_m = alpha_f (rho_inf = 1), whose amplification has
+     * spectral radius 1 at every omega dt.
      */
     bool
     is_dissipative() const
     {
       return is_dynamic() &&
-             (alpha_m_ != 0 || alpha_f_ != 0 || beta_ != 0.25 || gamma_ != 0.5);
+             (alpha_m_ != alpha_f_ || beta_ != 0.25 || gamma_ != 0.5);
     }
 
     /** Weight of a_n in the balanced inertia (0 for Newmark). */
