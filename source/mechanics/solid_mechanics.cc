@@ -272,7 +272,15 @@ namespace ContactDynamics
                                     dsp,
                                     constraints,
                                     false);
-    for (const auto i : dof_handler.locally_owned_dofs())
+    // the diagonal of the ghost rows too: a constraint added later (all
+    // multipliers for the initial acceleration) puts a diagonal entry into
+    // rows owned by another process, which Trilinos refuses where the
+    // pattern has none (a rigid obstacle's multipliers on a distributed
+    // mesh)
+    const IndexSet &rows = dsp.row_index_set();
+    for (const auto i : rows.n_elements() == dsp.n_rows() ?
+                          dof_handler.locally_owned_dofs() :
+                          rows)
       dsp.add(i, i);
     // a new pattern for the Jacobian follows
     positions_found = false;
