@@ -266,7 +266,12 @@ namespace ContactDynamics
       check_collectively(MPI_COMM_WORLD, [&]() {
         checkpoint = Checkpoints::find(restart);
         if (parameters.empty())
-          parameters = checkpoint + "/" + Checkpoints::parameter_file;
+          {
+            parameters = checkpoint + "/" + Checkpoints::parameter_file;
+            // (the rest is verified before the simulator reads it)
+            if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+              Checkpoints::verify(checkpoint, Checkpoints::parameter_file);
+          }
       });
     ParameterHandler prm;
     unsigned int     dim = 2;

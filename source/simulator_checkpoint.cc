@@ -159,11 +159,49 @@ namespace ContactDynamics
     const std::string  final =
       Checkpoints::directory(output_parameters.directory, step);
     const std::string temporary = final + ".part";
+    // p4est aborts the program on a full disk: the space is checked first
+    // (the vectors per cell of a distributed mesh, the quadrants, the
+    // history and the texts: measured within a factor 2 above)
+    const double cells = triangulation->n_global_active_cells();
+    const double bytes = 8. * checkpoint_vectors().size() *
+                           std::max<double>(dof_handler.n_dofs(),
+                                            cells * fe->n_dofs_per_cell()) +
+                         64. * cells + 4. * parameters_text.size() + 1e6;
     check_collectively(mpi_communicator, [&]() {
       if (root)
-        Checkpoints::create_temporary(temporary);
+        {
+          Checkpoints::check_free_space(output_parameters.directory, bytes);
+          Checkpoints::create_temporary(temporary, final);
+        }
     });
+    try
+      {
+        write_checkpoint_files(temporary, final);
+      }
+    catch (...)
+      {
+        // nothing half-written stays behind
+        std::error_code error;
+        if (root)
+          std::filesystem::remove_all(temporary, error);
+        throw;
+      }
+    last_checkpoint_step = step;
+    checkpoint_timer.restart();
+    // a restart starts without the factorization, pivot order or
+    // multigrid hierarchy of earlier steps: so does this run
+    newton.reset_linear_solver();
+    structure_changed = true;
+    pcout << "  checkpoint of step " << step << " in '" << final << "'"
+          << std::endl;
+  }
 
+  template <int dim>
+  void
+  Simulator<dim>::write_checkpoint_files(const std::string &temporary,
+                                         const std::string &final)
+  {
+    const bool     root = is_root(mpi_communicator);
     CheckpointData data;
     save_run(data);
     const bool distributed = save_vectors(data, temporary);
@@ -183,6 +221,8 @@ namespace ContactDynamics
                                 [&](std::ostream &out) {
                                   out << parameters_text;
                                 });
+          // last: a restart verifies every file against it
+          Checkpoints::write_checksums(temporary);
         }
     });
     // complete on every process: only now does it replace the older ones
@@ -190,13 +230,7 @@ namespace ContactDynamics
       if (root)
         Checkpoints::commit(temporary, final, 2);
     });
-    last_checkpoint_step = step;
-    checkpoint_timer.restart();
-    // a restart starts without the factorization, pivot order or
-    // multigrid hierarchy of earlier steps: so does this run
-    newton.reset_linear_solver();
-    structure_changed = true;
-    // and on a distributed mesh with the cells in the order a load gives
+    // a restart starts on a distributed mesh a distributed mesh with the cells in the order a load gives
     // them (refinement and coarsening leave another order, and the sums
     // of the assembly follow it): this run continues from the checkpoint
     if (distributed)
@@ -207,8 +241,6 @@ namespace ContactDynamics
         });
         load_checkpoint(final, saved);
       }
-    pcout << "  checkpoint of step " << step << " in '" << final << "'"
-          << std::endl;
   }
 
   template <int dim>
@@ -423,6 +455,8 @@ namespace ContactDynamics
   Simulator<dim>::check_checkpoint(const std::string &checkpoint,
                                    CheckpointData    &data) const
   {
+    // before p4est or anything else reads a byte of it
+    Checkpoints::verify(checkpoint);
     data.read(checkpoint + "/" + Checkpoints::data_file);
     AssertThrow(data.value("dimension") == dim,
                 ExcMessage("The checkpoint '" + checkpoint + "' is " +
@@ -500,6 +534,8 @@ namespace ContactDynamics
 #define INSTANTIATE(dim)                                                   \
   template std::vector<VectorType *> Simulator<dim>::checkpoint_vectors(); \
   template void                      Simulator<dim>::write_checkpoint();   \
+  template void Simulator<dim>::write_checkpoint_files(const std::string &, \
+                                                       const std::string &); \
   template void Simulator<dim>::restart(const std::string &);              \
   template void Simulator<dim>::load_checkpoint(const std::string &,       \
                                                 const CheckpointData &);   \

@@ -274,6 +274,10 @@ namespace ContactDynamics
     /** The checks of a restart before any file is touched. */
     void
     check_checkpoint(const std::string &checkpoint, CheckpointData &data) const;
+    /** The files of the checkpoint `final` into `temporary`, renamed. */
+    void
+    write_checkpoint_files(const std::string &temporary,
+                           const std::string &final);
     /** All of a checkpoint but its vectors. */
     void
     save_run(CheckpointData &data);

@@ -3,6 +3,8 @@
 
 #include <contact_dynamics/output/checkpoint.h>
 
+#include <boost/crc.hpp>
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdint>
@@ -58,11 +60,60 @@ namespace ContactDynamics
       return s;
     }
 
+    // (with either file: a checkpoint missing one is damaged, not absent)
     bool
     is_checkpoint(const fs::path &path)
     {
       return path.extension() != ".part" &&
-             fs::is_regular_file(path / Checkpoints::data_file);
+             (fs::is_regular_file(path / Checkpoints::data_file) ||
+              fs::is_regular_file(path / Checkpoints::checksum_file));
+    }
+
+    // every file in `path` has a name this program gives the files of a
+    // checkpoint (those of p4est, write_file_atomically's temporary): the
+    // only directories it removes or replaces
+    bool
+    holds_only_checkpoint_files(const fs::path &path)
+    {
+      const std::set<std::string> names = {Checkpoints::data_file,
+                                           Checkpoints::parameter_file,
+                                           std::string(
+                                             Checkpoints::parameter_file) +
+                                             ".part",
+                                           Checkpoints::checksum_file,
+                                           std::string(
+                                             Checkpoints::checksum_file) +
+                                             ".part",
+                                           "mesh",
+                                           "mesh.info",
+                                           "mesh_fixed.data",
+                                           "mesh_variable.data"};
+      std::error_code error;
+      if (!fs::is_directory(path, error))
+        return false;
+      for (const auto &entry : fs::directory_iterator(path, error))
+        if (!entry.is_regular_file() ||
+            names.count(entry.path().filename().string()) == 0)
+          return false;
+      return !error;
+    }
+
+    // the size and CRC-32 of a file (-1 if it cannot be read)
+    std::pair<std::uintmax_t, std::uint32_t>
+    size_and_checksum(const fs::path &file, bool &readable)
+    {
+      std::ifstream      in(file, std::ios::binary);
+      boost::crc_32_type crc;
+      std::vector<char>  buffer(1 << 20);
+      std::uintmax_t     size = 0;
+      while (in)
+        {
+          in.read(buffer.data(), buffer.size());
+          crc.process_bytes(buffer.data(), in.gcount());
+          size += in.gcount();
+        }
+      readable = in.eof() && !in.bad();
+      return {size, crc.checksum()};
     }
 
     // the step of a checkpoint directory step-N (names sort as text only
@@ -81,14 +132,15 @@ namespace ContactDynamics
                                   0;
     }
 
-    // a checkpoint this program wrote (its state.bin starts with the tag)
+    // a checkpoint this program wrote (its state.bin starts with the tag,
+    // nothing else is in it)
     bool
     is_own(const fs::path &path)
     {
       std::ifstream in(path / Checkpoints::data_file, std::ios::binary);
       std::string   first(tag.size(), '\0');
       in.read(first.data(), first.size());
-      return in && first == tag;
+      return in && first == tag && holds_only_checkpoint_files(path);
     }
 
     void
@@ -205,8 +257,19 @@ namespace ContactDynamics
     }
 
     void
-    create_temporary(const std::string &temporary)
+    create_temporary(const std::string &temporary, const std::string &final)
     {
+      // a directory of the user's under either name is left alone
+      for (const std::string &name : {temporary, final})
+        AssertThrow(!fs::exists(name) ||
+                      (name == temporary ?
+                         holds_only_checkpoint_files(name) :
+                         is_own(name)),
+                    ExcMessage(
+                      "The checkpoint cannot be written to '" + final +
+                      "': '" + name +
+                      "' exists and holds files this program did not write "
+                      "there. Move it away (nothing in it was changed)."));
       std::error_code error;
       fs::remove_all(temporary, error);
       fs::create_directories(temporary, error);
@@ -252,8 +315,11 @@ namespace ContactDynamics
           if (!is_step_name(entry.path()))
             continue;
           if (entry.path().extension() == ".part")
-            fs::remove_all(entry.path(), error);
-          else
+            {
+              if (holds_only_checkpoint_files(entry.path()))
+                fs::remove_all(entry.path(), error);
+            }
+          else if (is_own(entry.path()))
             complete.push_back(entry.path());
         }
       sort_by_step(complete);
@@ -267,6 +333,113 @@ namespace ContactDynamics
         }
       for (std::size_t i = 0; i + keep < complete.size(); ++i)
         fs::remove_all(complete[i], error);
+    }
+
+    void
+    write_checksums(const std::string &directory)
+    {
+      std::ostringstream list;
+      for (const auto &entry : fs::directory_iterator(directory))
+        {
+          const std::string name = entry.path().filename().string();
+          if (name == checksum_file || !entry.is_regular_file())
+            continue;
+          bool       readable = false;
+          const auto sum      = size_and_checksum(entry.path(), readable);
+          AssertThrow(readable,
+                      ExcMessage("Cannot read back the checkpoint file '" +
+                                 entry.path().string() + "'."));
+          list << sum.first << ' ' << sum.second << ' ' << name << '\n';
+        }
+      const std::string file = directory + "/" + checksum_file;
+      errno                  = 0;
+      std::ofstream out(file);
+      out << list.str();
+      out.close();
+      AssertThrow(out,
+                  ExcMessage("Cannot write the checkpoint file '" + file +
+                             "': " + std::strerror(errno) + "."));
+    }
+
+    void
+    verify(const std::string &checkpoint, const std::string &only)
+    {
+      const std::string list_file = checkpoint + "/" + checksum_file;
+      std::ifstream     in(list_file);
+      AssertThrow(in,
+                  ExcMessage("The checkpoint '" + checkpoint +
+                             "' cannot be verified: it has no readable "
+                             "list of checksums '" +
+                             checksum_file +
+                             "' (its writing did not complete, the file "
+                             "was removed, or a version of this program "
+                             "before checksums wrote it). Restart from "
+                             "another checkpoint."));
+      const auto damaged = [&](const std::string &file,
+                               const std::string &what) {
+        return ExcMessage("The checkpoint '" + checkpoint +
+                          "' is damaged: its file '" + file + "' " + what +
+                          ". Nothing was read or changed; restart from "
+                          "another checkpoint (the one before it is kept "
+                          "next to it).");
+      };
+      std::string            line;
+      std::set<std::string> listed;
+      while (std::getline(in, line))
+        {
+          std::istringstream fields(line);
+          std::uintmax_t     size = 0;
+          std::uint32_t      sum  = 0;
+          std::string        name;
+          AssertThrow((fields >> size >> sum) && std::getline(fields, name) &&
+                        name.size() > 1 && name[0] == ' ' &&
+                        name.find('/') == std::string::npos,
+                      damaged(checksum_file, "has a line that is not 'size "
+                                             "checksum name': '" +
+                                               line.substr(0, 80) + "'"));
+          name = name.substr(1);
+          listed.insert(name);
+          if (!only.empty() && name != only)
+            continue;
+          const fs::path file = fs::path(checkpoint) / name;
+          AssertThrow(fs::is_regular_file(file), damaged(name, "is missing"));
+          bool       readable = false;
+          const auto found    = size_and_checksum(file, readable);
+          AssertThrow(readable, damaged(name, "cannot be read"));
+          AssertThrow(found.first == size,
+                      damaged(name,
+                              "has " + std::to_string(found.first) +
+                                " bytes where " + std::to_string(size) +
+                                " were written (truncated or extended)"));
+          AssertThrow(found.second == sum,
+                      damaged(name,
+                              "does not have the checksum it was written "
+                              "with (its content changed)"));
+        }
+      const std::string needed = only.empty() ? data_file : only;
+      AssertThrow(listed.count(needed) > 0,
+                  damaged(checksum_file,
+                          "does not list '" + needed +
+                            "' (the list is damaged)"));
+    }
+
+    void
+    check_free_space(const std::string &directory, const double bytes)
+    {
+      std::error_code error;
+      double          available = fs::space(directory, error).available;
+      // for the test of a full disk (tests/CMakeLists.txt)
+      if (const char *free = std::getenv("CONTACT_DYNAMICS_FREE_BYTES"))
+        available = std::atof(free);
+      AssertThrow(error || available >= bytes,
+                  ExcMessage("Not enough free space for the checkpoint in '" +
+                             directory + "': " +
+                             std::to_string(std::llround(available / 1e6)) +
+                             " MB free, about " +
+                             std::to_string(std::llround(bytes / 1e6 + 0.5)) +
+                             " MB needed. Free space, or raise Output/"
+                             "Checkpoint interval (the outputs so far are "
+                             "complete; restart from the last checkpoint)."));
     }
 
     namespace
@@ -355,7 +528,7 @@ namespace ContactDynamics
       for (const auto &entry :
            fs::directory_iterator(path.parent_path(), error))
         if (is_step_name(entry.path()) && entry.path().extension() != ".part" &&
-            step_of(entry.path()) > step_of(path))
+            step_of(entry.path()) > step_of(path) && is_own(entry.path()))
           fs::remove_all(entry.path(), error);
     }
 
@@ -368,7 +541,9 @@ namespace ContactDynamics
         return;
       for (const auto &entry : fs::directory_iterator(directory, error))
         if (is_step_name(entry.path()) &&
-            (is_own(entry.path()) || entry.path().extension() == ".part"))
+            (is_own(entry.path()) ||
+             (entry.path().extension() == ".part" &&
+              holds_only_checkpoint_files(entry.path()))))
           fs::remove_all(entry.path(), error);
       // only if nothing else is in it
       fs::remove(directory, error);

@@ -84,6 +84,32 @@ namespace ContactDynamics
     inline const char *parameter_file = "parameters.prm";
     /** The prefix of the mesh files (a distributed mesh). */
     inline const char *mesh_file = "mesh";
+    /** The size and CRC-32 of every other file, written last. */
+    inline const char *checksum_file = "checksums";
+
+    /**
+     * First process, when every other file of the checkpoint in
+     * `directory` is written: lists their sizes and checksums.
+     */
+    void
+    write_checksums(const std::string &directory);
+
+    /**
+     * Before anything of `checkpoint` is read: every file its checksum
+     * list names exists with that size and checksum; throws naming the
+     * first that does not (or the missing list). With `only`, that file
+     * alone (the parameters read before the rest).
+     */
+    void
+    verify(const std::string &checkpoint, const std::string &only = "");
+
+    /**
+     * Throws unless `bytes` fit into the free space where `directory` is
+     * (what a checkpoint needs, estimated before it is written: a full disk
+     * in the middle of p4est's write aborts the program).
+     */
+    void
+    check_free_space(const std::string &directory, const double bytes);
 
     /** Where the checkpoint of `step` goes, and its temporary name. */
     std::string
@@ -91,17 +117,19 @@ namespace ContactDynamics
 
     /**
      * First process: removes a temporary directory left by a stopped run
-     * and creates `temporary` anew. Throws naming it.
+     * and creates `temporary` anew for the checkpoint `final`. Throws
+     * naming it, and changes nothing, where either name is taken by a
+     * directory with files this program does not write.
      */
     void
-    create_temporary(const std::string &temporary);
+    create_temporary(const std::string &temporary, const std::string &final);
 
     /**
      * First process: renames the complete `temporary` to `final` (replacing
      * one of the same step) and removes all but the `keep` newest
      * checkpoints up to it, those of later steps (a run restarted from an
      * earlier checkpoint abandons them) and every other temporary
-     * directory.
+     * directory: only directories that hold nothing but checkpoint files.
      */
     void
     commit(const std::string &temporary,
