@@ -362,7 +362,7 @@ namespace ContactDynamics
                       jacobian,
                       contact_full);
     check_collectively(mpi_communicator, [&]() {
-      contact->check_initial_state(screen_log());
+      contact->check_initial_state(u_ghost, screen_log());
     });
   }
 

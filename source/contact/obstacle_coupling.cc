@@ -1,4 +1,5 @@
 #include <contact_dynamics/contact/obstacle_coupling.h>
+#include <contact_dynamics/contact/surface_geometry_3d.h>
 #include <contact_dynamics/output/checkpoint.h>
 #include <contact_dynamics/parallel.h>
 
@@ -7,6 +8,22 @@
 
 namespace ContactDynamics
 {
+  namespace
+  {
+    // (2-D: the tangent is the rotated normal)
+    unsigned int
+    reference_tangent_axis(const ContactSurface<2> &, const unsigned int)
+    {
+      return 0;
+    }
+
+    unsigned int
+    reference_tangent_axis(const ContactSurface<3> &s, const unsigned int j)
+    {
+      return ClippingGeometry::tangent_axis(s, j);
+    }
+  } // namespace
+
   template <int dim>
   void
   ObstacleCoupling<dim>::set_up(ContactPairData<dim>          &pair,
@@ -23,14 +40,10 @@ namespace ContactDynamics
       {
         for (unsigned int d = 0; d < dim; ++d)
           pair.dof_node[s.dofs[j][d]] = {j, d};
-        // the axis least aligned with the obstacle's normal at the node
-        Tensor<1, dim> normal;
-        pair.obstacle->signed_distance(pair.committed_place,
-                                       Tensor<1, dim>(s.reference[j]),
-                                       normal);
-        for (unsigned int d = 1; d < dim; ++d)
-          if (std::abs(normal[d]) < std::abs(normal[pair.tangent_axis[j]]))
-            pair.tangent_axis[j] = d;
+        // from the surface's own reference normal, as for meshed pairs: the
+        // obstacle's normal at the start says nothing about where it will
+        // touch the node (a sphere moving diagonally)
+        pair.tangent_axis[j] = reference_tangent_axis(s, j);
       }
   }
 
@@ -140,10 +153,6 @@ namespace ContactDynamics
         for (const auto *t : {&r.torque, &r.friction_torque})
           reaction.insert(reaction.end(), t->begin_raw(), t->end_raw());
         data.set(key + "reaction", reaction);
-        // (3-D obstacles: chosen at the placement of the setup's time)
-        data.set(key + "tangent axis",
-                 std::vector<double>(pair.tangent_axis.begin(),
-                                     pair.tangent_axis.end()));
       }
     data.set("contact/obstacle work",
              {work_done, friction_work_done, last_normal_work});
@@ -152,17 +161,14 @@ namespace ContactDynamics
   template <int dim>
   void
   ObstacleCoupling<dim>::load(const CheckpointData        &data,
-                              const ContactHistoryContext &context)
+                              const ContactHistoryContext &)
   {
     for (unsigned int p = 0; p < pairs.size(); ++p)
       {
         auto             &pair = pairs[p];
-        const auto       &map  = (*context.node_maps)[p];
         const std::string key  = contact_pair_key(p);
-        const auto       &axes = data.get(key + "tangent axis");
-        if (axes.size() == pair.tangent_axis.size())
-          for (unsigned int k = 0; k < axes.size(); ++k)
-            pair.tangent_axis[map.empty() ? k : map[k]] = axes[k];
+        // (the tangent axes follow from the reference surface: an older
+        // checkpoint's entry 'tangent axis' is not read)
         const auto &reaction = data.get(key + "reaction", 2 * dim + 6);
         auto       &r        = pair.committed_reaction;
         auto        x        = reaction.begin();

@@ -11,12 +11,15 @@
 
 #include <contact_dynamics/contact/capture_count.h>
 #include <contact_dynamics/contact/coordinates.h>
+#include <contact_dynamics/contact/face_passage.h>
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/parallel.h>
+#include <contact_dynamics/parameters.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <initializer_list>
+#include <limits>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -299,28 +302,172 @@ namespace ContactDynamics
     return values;
   }
 
+  namespace
+  {
+    // An obstacle must face its surface: at the node nearest to it the
+    // obstacle's normal (towards the bodies) and the surface's outward
+    // normal are opposed. Within 60 degrees of the same direction the
+    // obstacle is behind the surface (a plane's Normal reversed, a
+    // cylinder inside the body): refused, even touching nothing.
+    template <int dim>
+    void
+    check_obstacle_side(const ContactPairData<dim> &pair,
+                        const std::string          &name,
+                        const VectorType           &u)
+    {
+      const auto  &s       = pair.secondary;
+      double       nearest = std::numeric_limits<double>::infinity();
+      unsigned int node    = 0;
+      for (unsigned int j = 0; j < s.n_nodes(); ++j)
+        if (pair.owned_node[j])
+          {
+            Tensor<1, dim> normal;
+            const double   distance = pair.obstacle->signed_distance(
+              pair.committed_place, Tensor<1, dim>(s.position(j, u)), normal);
+            if (distance < nearest)
+              {
+                nearest = distance;
+                node    = j;
+              }
+          }
+      if (nearest == std::numeric_limits<double>::infinity())
+        return;
+      Tensor<1, dim> normal;
+      pair.obstacle->signed_distance(pair.committed_place,
+                                     Tensor<1, dim>(s.position(node, u)),
+                                     normal);
+      const double cosine = outward_normal(s, node, u) * normal;
+      AssertThrow(cosine <= 0.5,
+                  ExcMessage(
+                    "The rigid obstacle of pair '" + name +
+                    "' lies behind its surface at t = 0: at the node "
+                    "nearest to it, at " +
+                    coordinates(s.reference[node]) +
+                    " in the reference configuration (distance " +
+                    format_number(nearest) +
+                    "), the obstacle's normal and the surface's outward "
+                    "normal are " +
+                    format_number(std::acos(std::min(1., cosine)) * 180 /
+                                  numbers::PI) +
+                    " degrees apart (facing each other: 180). A plane's "
+                    "Normal must point to the body; a cylinder or sphere "
+                    "must lie outside the body."));
+    }
+
+    // A radius the faces cannot resolve (the obstacle slips between the
+    // nodes and quadrature points: a needle indents with no force), or so
+    // large that |x - c| - R loses the gap to round-off (1e300 made it
+    // inactive), is refused; the bounds from the surface's faces.
+    template <int dim>
+    void
+    check_obstacle_radius(const ContactPairData<dim> &pair,
+                          const std::string          &name,
+                          const VectorType           &u)
+    {
+      const double radius = pair.obstacle->radius();
+      const auto  &s      = pair.secondary;
+      if (radius == 0 || s.faces.empty())
+        return; // a plane
+      double           smallest = std::numeric_limits<double>::infinity();
+      BoundingBox<dim> all;
+      for (unsigned int f = 0; f < s.faces.size(); ++f)
+        {
+          double     length = 0;
+          const auto box    = s.face_box(f, u, length);
+          smallest          = std::min(smallest, length);
+          if (f == 0)
+            all = box;
+          else
+            all.merge_with(box);
+        }
+      const double extent = all.get_boundary_points().first.distance(
+        all.get_boundary_points().second);
+      AssertThrow(radius >= 0.1 * smallest,
+                  ExcMessage("Radius = " + format_number(radius) +
+                             " of the rigid obstacle of pair '" + name +
+                             "' is below a tenth of the smallest face of "
+                             "its surface (" +
+                             format_number(smallest) +
+                             "): the faces cannot resolve it (it would sink "
+                             "between the nodes with no force). Refine the "
+                             "surface or give a larger Radius."));
+      AssertThrow(radius <= 1e6 * extent,
+                  ExcMessage("Radius = " + format_number(radius) +
+                             " of the rigid obstacle of pair '" + name +
+                             "' is more than 1e6 times the size of its "
+                             "surface (" +
+                             format_number(extent) +
+                             "): its gaps would be lost to round-off. Use "
+                             "Shape = plane."));
+    }
+  } // namespace
+
   template <int dim>
   void
-  SurfaceContact<dim>::check_initial_state(std::ostream &log) const
+  SurfaceContact<dim>::check_initial_state(const VectorType &u,
+                                           std::ostream     &log) const
   {
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      if (pairs[p].obstacle)
+        check_obstacle_radius(pairs[p], contact.pairs[p].name, u);
     double       worst = 0;
     unsigned int pair = 0, node = 0;
     for (unsigned int p = 0; p < pairs.size(); ++p)
       for (unsigned int j = 0; j < pairs[p].nodes.size(); ++j)
-        if (-pairs[p].nodes[j].normalized_gap() > worst)
-          {
-            worst = -pairs[p].nodes[j].normalized_gap();
-            pair  = p;
-            node  = j;
-          }
-    if (worst <= complementarity.capture_tolerance)
-      return;
+        {
+          // an obstacle's depth is the node's own signed distance: a
+          // weighted gap (dual basis functions change sign) is negative
+          // under a curved obstacle over coarse faces that touches nothing,
+          // and the search finds no gap for a node deep inside
+          const auto &s     = pairs[p].secondary;
+          double      depth = -pairs[p].nodes[j].normalized_gap();
+          if (pairs[p].obstacle)
+            {
+              if (!pairs[p].owned_node[j])
+                continue;
+              Tensor<1, dim> x(s.reference[j]), normal;
+              for (unsigned int d = 0; d < dim; ++d)
+                x[d] += u(s.dofs[j][d]);
+              depth = -pairs[p].obstacle->signed_distance(
+                pairs[p].committed_place, x, normal);
+            }
+          if (depth > worst)
+            {
+              worst = depth;
+              pair  = p;
+              node  = j;
+            }
+        }
+    if (worst > complementarity.capture_tolerance)
+      report_initial_overlap(worst, pair, node, log);
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      if (pairs[p].obstacle)
+        check_obstacle_side(pairs[p], contact.pairs[p].name, u);
+  }
+
+  template <int dim>
+  void
+  SurfaceContact<dim>::report_initial_overlap(const double       worst,
+                                              const unsigned int pair,
+                                              const unsigned int node,
+                                              std::ostream      &log) const
+  {
     std::ostringstream where;
-    where << "The bodies overlap at t = 0 by up to " << worst << " (pair '"
-          << contact.pairs[pair].name << "', secondary node at "
-          << coordinates(pairs[pair].secondary.reference[node])
-          << " in the reference configuration; Capture tolerance = "
-          << complementarity.capture_tolerance << ")";
+    if (pairs[pair].obstacle)
+      where << "A node of pair '" << contact.pairs[pair].name
+            << "' lies inside the rigid obstacle at t = 0, by " << worst
+            << " (the node at "
+            << coordinates(pairs[pair].secondary.reference[node])
+            << " in the reference configuration; Capture tolerance = "
+            << complementarity.capture_tolerance
+            << "; a plane's Normal must point to the body, a cylinder or "
+               "sphere must lie outside it)";
+    else
+      where << "The bodies overlap at t = 0 by up to " << worst << " (pair '"
+            << contact.pairs[pair].name << "', secondary node at "
+            << coordinates(pairs[pair].secondary.reference[node])
+            << " in the reference configuration; Capture tolerance = "
+            << complementarity.capture_tolerance << ")";
     AssertThrow(contact.allow_initial_penetration,
                 ExcMessage(where.str() +
                            ". Pushing them apart would create energy. Move "

@@ -103,4 +103,20 @@ namespace ContactDynamics
   }
 
 
+
+  Tensor<1, 2>
+  outward_normal(const ContactSurface<2> &surface,
+                 const unsigned int       node,
+                 const VectorType        &u)
+  {
+    // (the tangent b - a turned clockwise, as in crosses_face())
+    Tensor<1, 2> n;
+    for (const unsigned int f : surface.node_faces[node])
+      {
+        const Tensor<1, 2> t = surface.position(surface.faces[f][1], u) -
+                               surface.position(surface.faces[f][0], u);
+        n += Tensor<1, 2>({t[1], -t[0]}) / t.norm();
+      }
+    return n / n.norm();
+  }
 } // namespace ContactDynamics

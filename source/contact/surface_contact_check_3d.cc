@@ -4,6 +4,7 @@
 #include <contact_dynamics/contact/closest_point_3d.h>
 #include <contact_dynamics/contact/coordinates.h>
 #include <contact_dynamics/contact/face_passage.h>
+#include <contact_dynamics/contact/surface_geometry_3d.h>
 
 #include <algorithm>
 #include <sstream>
@@ -90,4 +91,20 @@ namespace ContactDynamics
   }
 
 
+
+  Tensor<1, 3>
+  outward_normal(const ContactSurface<3> &surface,
+                 const unsigned int       node,
+                 const VectorType        &u)
+  {
+    ClippingGeometry::NodeMap<double> x;
+    for (const unsigned int f : surface.node_faces[node])
+      for (const unsigned int k : surface.faces[f])
+        x[k] = surface.position(k, u);
+    const auto   n = ClippingGeometry::nodal_normal(surface, node, x);
+    Tensor<1, 3> result;
+    for (unsigned int d = 0; d < 3; ++d)
+      result[d] = n[d];
+    return result;
+  }
 } // namespace ContactDynamics

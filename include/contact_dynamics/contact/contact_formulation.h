@@ -248,12 +248,14 @@ namespace ContactDynamics
     }
 
     /**
-     * Called after an assemble() at the initial state: bodies that overlap
-     * stop the run with a message (or, if allowed, get a warning on `log`).
+     * Called after an assemble() at the initial state `u` (ghosted): bodies
+     * that overlap stop the run with a message (or, if allowed, get a
+     * warning on `log`).
      */
     virtual void
-    check_initial_state(std::ostream &log) const
+    check_initial_state(const VectorType &u, std::ostream &log) const
     {
+      (void)u;
       (void)log;
     }
 

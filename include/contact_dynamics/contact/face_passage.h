@@ -2,7 +2,8 @@
 // _3d.cc): how a secondary node that moved from x0 to x1 in a step went
 // through one of the given faces of a primary surface (moving from their
 // positions at committed_u to those at u) and ends deeper than the tolerance
-// behind it; empty if it did not.
+// behind it; empty if it did not. And the outward unit normal of a
+// surface at a node (the mean of its faces' normals) in the configuration u.
 #ifndef contact_dynamics_contact_face_passage_h
 #define contact_dynamics_contact_face_passage_h
 
@@ -32,6 +33,16 @@ namespace ContactDynamics
                        const VectorType             &committed_u,
                        const VectorType             &u,
                        const double                  tolerance);
+
+  Tensor<1, 2>
+  outward_normal(const ContactSurface<2> &surface,
+                 const unsigned int       node,
+                 const VectorType        &u);
+
+  Tensor<1, 3>
+  outward_normal(const ContactSurface<3> &surface,
+                 const unsigned int       node,
+                 const VectorType        &u);
 } // namespace ContactDynamics
 
 #endif

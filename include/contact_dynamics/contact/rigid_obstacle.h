@@ -149,6 +149,13 @@ namespace ContactDynamics
       return parameters.shape == Shape::plane ? 1e300 : parameters.radius;
     }
 
+    /** The radius of a cylinder or sphere; 0 for a plane. */
+    double
+    radius() const
+    {
+      return parameters.shape == Shape::plane ? 0. : parameters.radius;
+    }
+
   private:
     RigidObstacleParameters parameters;
     // the translation's components and the rotation angle, functions of t

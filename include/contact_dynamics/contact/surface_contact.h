@@ -164,7 +164,12 @@ namespace ContactDynamics
     dissipated_energy() const override;
 
     void
-    check_initial_state(std::ostream &log) const override;
+    check_initial_state(const VectorType &u, std::ostream &log) const override;
+    void
+    report_initial_overlap(double        worst,
+                           unsigned int  pair,
+                           unsigned int  node,
+                           std::ostream &log) const;
 
     /**
      * The normalized gap and, with friction, the slip rates along the
