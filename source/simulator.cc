@@ -62,6 +62,10 @@ namespace ContactDynamics
     OutputParameters::declare_parameters(prm);
     prm.leave_subsection();
 
+    prm.enter_subsection("Energy watchdog");
+    EnergyWatchdog::declare_parameters(prm);
+    prm.leave_subsection();
+
     declare_contact_parameters(prm, layout, dim);
 
     prm.enter_subsection("Parallel");

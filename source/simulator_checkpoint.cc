@@ -350,6 +350,7 @@ namespace ContactDynamics
     restarting       = true;
     wall_time_before = data.value("wall time");
     load_checkpoint(checkpoint, data);
+    watchdog.reset(energy_account.balance());
     // (the columns are known once the contact is set up)
     check_collectively(mpi_communicator, [&]() {
       AssertThrow(data.text("statistics columns") ==

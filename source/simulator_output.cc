@@ -64,6 +64,7 @@ namespace ContactDynamics
     if (integrator.error_tolerance() > 0)
       for (const auto *c : {"error_estimate", "rejected_steps"})
         columns.emplace_back(c);
+    columns.emplace_back("energy_created");
     return columns;
   }
 
@@ -165,6 +166,10 @@ namespace ContactDynamics
       for (const double x : {step == 0 ? 0. : controller.estimate(),
                              double(controller.n_rejected())})
         row.push_back(x);
+    if (step == 0)
+      watchdog.reset(energies);
+    const double created = step == 0 ? 0. : watchdog.created_fraction(energies);
+    row.push_back(created);
     const unsigned int interval = output_parameters.vtu_interval;
     try
       {
@@ -196,6 +201,15 @@ namespace ContactDynamics
             << "  E_kin+E_el = " << energies.kinetic + energies.elastic
             << "  balance error = " << energies.error() << std::defaultfloat
             << std::endl;
+    // after the step's outputs: a stop loses nothing
+    const std::string warning = watchdog.warning(created, step);
+    AssertThrow(warning.empty() || !watchdog.stops(),
+                ExcMessage(warning + " The run stops (Energy watchdog/Action "
+                                     "= stop) at step " +
+                           std::to_string(step) +
+                           "; what was written before is complete."));
+    if (!warning.empty())
+      pcout << "Warning: " << warning << std::endl;
   }
 
   template <int dim>

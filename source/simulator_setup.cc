@@ -79,6 +79,10 @@ namespace ContactDynamics
     output_parameters.parse_parameters(prm);
     prm.leave_subsection();
 
+    prm.enter_subsection("Energy watchdog");
+    watchdog.parse_parameters(prm);
+    prm.leave_subsection();
+
     contact = create_contact_formulation<dim>(prm, layout);
     if (contact)
       fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(1),

@@ -18,6 +18,7 @@
 #include <contact_dynamics/mechanics/body_state.h>
 #include <contact_dynamics/mechanics/boundary_conditions.h>
 #include <contact_dynamics/mechanics/energy_account.h>
+#include <contact_dynamics/mechanics/energy_watchdog.h>
 #include <contact_dynamics/mechanics/solid_mechanics.h>
 #include <contact_dynamics/mechanics/time_integrator.h>
 #include <contact_dynamics/mechanics/time_step_controller.h>
@@ -326,6 +327,7 @@ namespace ContactDynamics
     MatrixType           jacobian;
     NewtonSolver         newton;
     OutputParameters     output_parameters;
+    EnergyWatchdog       watchdog;
     RefinementParameters refinement;
     unsigned int         base_level = 0; // of the initial mesh
     AdaptationSchedule   adaptation;
