@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <contact_dynamics/contact/coordinates.h>
 #include <contact_dynamics/contact/node_history.h>
 #include <contact_dynamics/contact/node_state_fields.h>
 #include <contact_dynamics/output/checkpoint.h>
@@ -13,8 +14,13 @@ namespace ContactDynamics
     gap_field = 0;
     for (auto &field : slip_field)
       field = 0;
-    for (auto &pair : pairs)
-      for (unsigned int j = 0; j < pair.nodes.size(); ++j)
+    held.resize(pairs.size());
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      {
+        auto &pair = pairs[p];
+        if (!context.reevaluation)
+          held[p].clear();
+        for (unsigned int j = 0; j < pair.nodes.size(); ++j)
         {
           ContactNodeState &node = pair.nodes[j];
           // a node held in contact through the step carries the Newmark
@@ -38,10 +44,37 @@ namespace ContactDynamics
                 slip_field[a](pair.secondary.dofs[j][dim]) = node.slip_rate[a];
             }
           pair.position[j] = pair.secondary.position(j, *context.u);
+          keep_held(p, j, context.reevaluation);
         }
+      }
     gap_field.compress(VectorOperation::insert);
     for (auto &field : slip_field)
       field.compress(VectorOperation::insert);
+  }
+
+  template <int dim>
+  void
+  NodeHistory<dim>::keep_held(const unsigned int p,
+                              const unsigned int j,
+                              const bool         reevaluation)
+  {
+    ContactNodeState &node = pairs[p].nodes[j];
+    const auto        key  = position_key(pairs[p].secondary.reference[j]);
+    if (!reevaluation)
+      {
+        if (node.persistent)
+          held[p][key] = {{node.held_gap,
+                           node.held_rate,
+                           node.held_acceleration}};
+        return;
+      }
+    const auto before = held[p].find(key);
+    if (before == held[p].end())
+      return;
+    node.held_gap          = before->second[0];
+    node.held_rate         = before->second[1];
+    node.held_acceleration = before->second[2];
+    node.persistent        = true;
   }
 
   template <int dim>

@@ -9,6 +9,7 @@
 #include <contact_dynamics/contact/contact_pair_data.h>
 
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,10 @@ namespace ContactDynamics
     /**
      * The held gaps and rates and the persistency of the next step, the
      * output fields and the positions of the converged state context.u.
+     * The re-evaluation after a mesh change keeps the held gap, its rates
+     * and the persistency of every node that was held before it (by
+     * reference position): the new mesh's weighted gap of the same state
+     * differs, and a fresh start from the velocity rate broke the hold.
      */
     void
     commit(const ContactHistoryContext &context) override;
@@ -68,9 +73,18 @@ namespace ContactDynamics
     std::array<VectorType, dim - 1> slip_field; // slip rates, likewise
 
   private:
+    // after commit()'s values of node j of pair p: records or restores
+    // them (see commit())
+    void
+    keep_held(unsigned int p, unsigned int j, bool reevaluation);
+
     std::vector<ContactPairData<dim>> &pairs;
     const ComplementarityParameters   &complementarity;
     const MPI_Comm                    &comm;
+    // per pair, the nodes held after the last step: held gap, rate and
+    // acceleration by reference position (position_key())
+    std::vector<std::map<std::array<double, dim>, std::array<double, 3>>>
+      held;
   };
 } // namespace ContactDynamics
 
