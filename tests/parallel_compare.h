@@ -53,8 +53,9 @@ namespace
         if (name.find("force") != std::string::npos)
           scale = force_scale;
         else if (name.find("nodes") != std::string::npos || name == "step" ||
-                 name == "time" || name == "dt" || name == "time_step_cuts")
-          scale = 1; // counts and times: equal
+                 name == "time" || name == "dt" || name == "time_step_cuts" ||
+                 name == "energy_created")
+          scale = 1; // counts, times and fractions
         const auto &p = parallel.at(name);
         for (unsigned int i = 0; i < column.second.size(); ++i)
           worst = std::max(worst, std::abs(p[i] - column.second[i]) / scale);
