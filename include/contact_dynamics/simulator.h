@@ -385,6 +385,7 @@ namespace ContactDynamics
     bool         structure_changed = true;
     int          last_vtu_step     = -1;
     std::string  last_failure; // why the last failed step failed
+    unsigned int failures_in_a_row = 0; // since the last committed step
     std::string  linear_solver_name;
 
     std::unique_ptr<StatisticsFile>      statistics;
