@@ -343,7 +343,12 @@ namespace ContactDynamics
   {
     wall_timer.restart();
     CheckpointData data;
-    // everything is checked before any file is touched
+    // everything is checked before any file is touched; the files first,
+    // once, before p4est or anything else reads a byte of them
+    check_collectively(mpi_communicator, [&]() {
+      if (is_root(mpi_communicator))
+        Checkpoints::verify(checkpoint);
+    });
     check_collectively(mpi_communicator, [&]() {
       check_checkpoint(checkpoint, data);
     });
@@ -456,8 +461,6 @@ namespace ContactDynamics
   Simulator<dim>::check_checkpoint(const std::string &checkpoint,
                                    CheckpointData    &data) const
   {
-    // before p4est or anything else reads a byte of it
-    Checkpoints::verify(checkpoint);
     data.read(checkpoint + "/" + Checkpoints::data_file);
     AssertThrow(data.value("dimension") == dim,
                 ExcMessage("The checkpoint '" + checkpoint + "' is " +
