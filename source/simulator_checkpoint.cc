@@ -230,9 +230,10 @@ namespace ContactDynamics
       if (root)
         Checkpoints::commit(temporary, final, 2);
     });
-    // a restart starts on a distributed mesh a distributed mesh with the cells in the order a load gives
-    // them (refinement and coarsening leave another order, and the sums
-    // of the assembly follow it): this run continues from the checkpoint
+    // a restart starts on a distributed mesh with the cells in the order a
+    // load gives them (refinement and coarsening leave another order, and
+    // the sums of the assembly follow it): this run continues from the
+    // checkpoint
     if (distributed)
       {
         CheckpointData saved;

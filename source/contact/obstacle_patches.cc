@@ -34,7 +34,20 @@ namespace ContactDynamics
       if constexpr (dim == 2)
         return {{SegmentGeometry::rotate(n)}};
       else
-        return ClippingGeometry::tangent_basis(n, axis);
+        {
+          // the surface's axis (obstacle_coupling.cc); at a node far from
+          // the contact (no tangential force there) the obstacle's normal
+          // may lie nearly along it (a small sphere, a cylinder rolling
+          // along x): there the axis least aligned with that normal
+          using std::abs;
+          unsigned int a = axis;
+          if (abs(MortarGeometry::value_of(n[a])) > 0.9)
+            for (unsigned int d = 0; d < 3; ++d)
+              if (abs(MortarGeometry::value_of(n[d])) <
+                  abs(MortarGeometry::value_of(n[a])))
+                a = d;
+          return ClippingGeometry::tangent_basis(n, a);
+        }
     }
 
     /** Shape functions of a face on [0,1]^(dim-1), lexicographic. */

@@ -318,18 +318,19 @@ namespace ContactDynamics
       const auto  &s       = pair.secondary;
       double       nearest = std::numeric_limits<double>::infinity();
       unsigned int node    = 0;
+      // (every process has every surface node's position: the same
+      // verdict on all of them, whatever the partition)
       for (unsigned int j = 0; j < s.n_nodes(); ++j)
-        if (pair.owned_node[j])
-          {
-            Tensor<1, dim> normal;
-            const double   distance = pair.obstacle->signed_distance(
-              pair.committed_place, Tensor<1, dim>(s.position(j, u)), normal);
-            if (distance < nearest)
-              {
-                nearest = distance;
-                node    = j;
-              }
-          }
+        {
+          Tensor<1, dim> normal;
+          const double   distance = pair.obstacle->signed_distance(
+            pair.committed_place, Tensor<1, dim>(s.position(j, u)), normal);
+          if (distance < nearest)
+            {
+              nearest = distance;
+              node    = j;
+            }
+        }
       if (nearest == std::numeric_limits<double>::infinity())
         return;
       Tensor<1, dim> normal;
@@ -423,8 +424,7 @@ namespace ContactDynamics
           double      depth = -pairs[p].nodes[j].normalized_gap();
           if (pairs[p].obstacle)
             {
-              if (!pairs[p].owned_node[j])
-                continue;
+              // (every node on every process, as check_obstacle_side())
               Tensor<1, dim> x(s.reference[j]), normal;
               for (unsigned int d = 0; d < dim; ++d)
                 x[d] += u(s.dofs[j][d]);

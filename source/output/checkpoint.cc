@@ -98,7 +98,8 @@ namespace ContactDynamics
       return !error;
     }
 
-    // the size and CRC-32 of a file (-1 if it cannot be read)
+    // the size and CRC-32 of a file; `readable` false if it could not be
+    // read to its end
     std::pair<std::uintmax_t, std::uint32_t>
     size_and_checksum(const fs::path &file, bool &readable)
     {
@@ -132,15 +133,14 @@ namespace ContactDynamics
                                   0;
     }
 
-    // a checkpoint this program wrote (its state.bin starts with the tag,
-    // nothing else is in it)
+    // a checkpoint this program wrote, complete or damaged: not empty, and
+    // nothing in it but the names of its files
     bool
     is_own(const fs::path &path)
     {
-      std::ifstream in(path / Checkpoints::data_file, std::ios::binary);
-      std::string   first(tag.size(), '\0');
-      in.read(first.data(), first.size());
-      return in && first == tag && holds_only_checkpoint_files(path);
+      std::error_code error;
+      return holds_only_checkpoint_files(path) &&
+             !fs::is_empty(path, error) && !error;
     }
 
     void
@@ -339,6 +339,7 @@ namespace ContactDynamics
     write_checksums(const std::string &directory)
     {
       std::ostringstream list;
+      unsigned int       n_files = 0;
       for (const auto &entry : fs::directory_iterator(directory))
         {
           const std::string name = entry.path().filename().string();
@@ -350,11 +351,13 @@ namespace ContactDynamics
                       ExcMessage("Cannot read back the checkpoint file '" +
                                  entry.path().string() + "'."));
           list << sum.first << ' ' << sum.second << ' ' << name << '\n';
+          ++n_files;
         }
       const std::string file = directory + "/" + checksum_file;
       errno                  = 0;
       std::ofstream out(file);
-      out << list.str();
+      // the last line counts the others: a list cut at a line is damaged
+      out << list.str() << "files " << n_files << '\n';
       out.close();
       AssertThrow(out,
                   ExcMessage("Cannot write the checkpoint file '" + file +
@@ -385,8 +388,21 @@ namespace ContactDynamics
       };
       std::string            line;
       std::set<std::string> listed;
+      bool                   counted = false;
       while (std::getline(in, line))
         {
+          AssertThrow(!counted,
+                      damaged(checksum_file, "has lines after its count"));
+          if (line.rfind("files ", 0) == 0)
+            {
+              AssertThrow(line == "files " + std::to_string(listed.size()),
+                          damaged(checksum_file,
+                                  "lists " + std::to_string(listed.size()) +
+                                    " files where its last line says '" +
+                                    line.substr(0, 40) + "'"));
+              counted = true;
+              continue;
+            }
           std::istringstream fields(line);
           std::uintmax_t     size = 0;
           std::uint32_t      sum  = 0;
@@ -416,6 +432,9 @@ namespace ContactDynamics
                               "does not have the checksum it was written "
                               "with (its content changed)"));
         }
+      AssertThrow(counted,
+                  damaged(checksum_file,
+                          "is incomplete (no count of the files at its end)"));
       const std::string needed = only.empty() ? data_file : only;
       AssertThrow(listed.count(needed) > 0,
                   damaged(checksum_file,

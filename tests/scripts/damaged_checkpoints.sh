@@ -57,6 +57,21 @@ open(f, 'wb').write(b)" "$checkpoint/$file" "$size" ;;
     fi
   done
 done
+# a list cut at a line boundary (its first line removed: the file it
+# named would go unchecked)
+rm -rf "$checkpoint"
+cp -r pristine "$checkpoint"
+sed -i 1d "$checkpoint/checksums"
+cases=$((cases + 1))
+before=$(state)
+$run --restart out > restart.log 2>&1
+status=$?
+if [ $status -eq 1 ] && grep -q "is damaged: its file 'checksums' lists" restart.log && [ "$before" = "$(state)" ]; then
+  refused=$((refused + 1))
+else
+  echo "NOT REFUSED: checksums without its first line (exit status $status)"
+  tail -3 restart.log
+fi
 echo "refused $refused of $cases damaged checkpoints"
 [ $refused -eq $cases ] && [ $cases -ge 6 ] && echo "every damaged checkpoint refused"
 rm -rf "$checkpoint"
