@@ -547,7 +547,7 @@ namespace ContactDynamics
       ++failures_in_a_row;
     AssertThrow(integrator.is_dynamic() || linear_solver_name != "AMG" ||
                   failures_in_a_row < 3,
-                ExcMessage(
+                ExcCollective(
                   "Newton did not converge in 3 attempts in a row at t = " +
                   format_number(time) + " (last: " + last_failure +
                   ", residual " +

@@ -203,8 +203,9 @@ namespace ContactDynamics
             << std::endl;
     // after the step's outputs: a stop loses nothing
     const std::string warning = watchdog.warning(created, step);
+    // (the same on every process: one message)
     AssertThrow(warning.empty() || !watchdog.stops(),
-                ExcMessage(warning + " The run stops (Energy watchdog/Action "
+                ExcCollective(warning + " The run stops (Energy watchdog/Action "
                                      "= stop) at step " +
                            std::to_string(step) +
                            "; what was written before is complete."));
