@@ -277,10 +277,9 @@ namespace ContactDynamics
     // rows owned by another process, which Trilinos refuses where the
     // pattern has none (a rigid obstacle's multipliers on a distributed
     // mesh)
-    const IndexSet &rows = dsp.row_index_set();
-    for (const auto i : rows.n_elements() == dsp.n_rows() ?
-                          dof_handler.locally_owned_dofs() :
-                          rows)
+    // (every row the pattern keeps: on a replicated mesh of a few cells
+    // the locally relevant rows are all rows)
+    for (const auto i : dsp.row_index_set())
       dsp.add(i, i);
     // a new pattern for the Jacobian follows
     positions_found = false;
