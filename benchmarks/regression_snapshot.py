@@ -16,7 +16,10 @@ bitwise comparison before and after a change that must not change results
         restart the checkpoints that an earlier build wrote into OLD (with
         this build) and put the outputs into NEW/<file>/restart/: checks
         that checkpoints of the earlier build still load, and continue to
-        the same numbers.
+        the same numbers (checkpoints of a build before issue 39 have no
+        checksum list and are refused: compare within builds since).
+    (issue 39 added the statistics column energy_created: against older
+    outputs, compare with --ignore-columns energy_created)
     regression_snapshot.py compare OLD NEW [--ignore-columns A,B]
         list the files that differ (CSV files without the named columns,
         which a change added on purpose); exit status 1 if any does.
