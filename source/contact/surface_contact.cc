@@ -323,8 +323,10 @@ namespace ContactDynamics
       for (unsigned int j = 0; j < s.n_nodes(); ++j)
         {
           Tensor<1, dim> normal;
-          const double   distance = pair.obstacle->signed_distance(
-            pair.committed_place, Tensor<1, dim>(s.position(j, u)), normal);
+          const double   distance =
+            pair.obstacle->signed_distance(pair.committed_place,
+                                           Tensor<1, dim>(s.position(j, u)),
+                                           normal);
           if (distance < nearest)
             {
               nearest = distance;
@@ -414,30 +416,50 @@ namespace ContactDynamics
     double       worst = 0;
     unsigned int pair = 0, node = 0;
     for (unsigned int p = 0; p < pairs.size(); ++p)
-      for (unsigned int j = 0; j < pairs[p].nodes.size(); ++j)
-        {
-          // an obstacle's depth is the node's own signed distance: a
-          // weighted gap (dual basis functions change sign) is negative
-          // under a curved obstacle over coarse faces that touches nothing,
-          // and the search finds no gap for a node deep inside
-          const auto &s     = pairs[p].secondary;
-          double      depth = -pairs[p].nodes[j].normalized_gap();
-          if (pairs[p].obstacle)
-            {
-              // (every node on every process, as check_obstacle_side())
-              Tensor<1, dim> x(s.reference[j]), normal;
-              for (unsigned int d = 0; d < dim; ++d)
-                x[d] += u(s.dofs[j][d]);
-              depth = -pairs[p].obstacle->signed_distance(
-                pairs[p].committed_place, x, normal);
-            }
-          if (depth > worst)
-            {
-              worst = depth;
-              pair  = p;
-              node  = j;
-            }
-        }
+      {
+        const auto faces = candidate_faces(pairs[p]);
+        for (unsigned int j = 0; j < pairs[p].nodes.size(); ++j)
+          {
+            // a node's depth is its own distance behind the primary face or
+            // obstacle: a weighted gap (dual basis functions change sign) is
+            // negative under a curved surface over coarse faces that touches
+            // nothing (hertz_adaptive at factor 0.2), and the search finds
+            // no gap for a node deep inside an obstacle
+            const auto &s     = pairs[p].secondary;
+            double      depth = -pairs[p].nodes[j].normalized_gap();
+            if (!pairs[p].obstacle && !faces[j].empty())
+              {
+                // the owner judges by the faces it found (where the node
+                // projects onto none, by its weighted gap)
+                const double own =
+                  depth_behind_surface(pairs[p].primary,
+                                       faces[j],
+                                       pairs[p].secondary.position(j, u),
+                                       u);
+                if (!std::isnan(own))
+                  depth = own;
+              }
+            else if (!pairs[p].obstacle && !pairs[p].owned_node[j])
+              depth = 0;
+            if (pairs[p].obstacle)
+              {
+                // (every node on every process, as check_obstacle_side())
+                Tensor<1, dim> x(s.reference[j]), normal;
+                for (unsigned int d = 0; d < dim; ++d)
+                  x[d] += u(s.dofs[j][d]);
+                depth =
+                  -pairs[p].obstacle->signed_distance(pairs[p].committed_place,
+                                                      x,
+                                                      normal);
+              }
+            if (depth > worst)
+              {
+                worst = depth;
+                pair  = p;
+                node  = j;
+              }
+          }
+      }
     if (worst > complementarity.capture_tolerance)
       report_initial_overlap(worst, pair, node, log);
     for (unsigned int p = 0; p < pairs.size(); ++p)

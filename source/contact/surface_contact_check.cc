@@ -28,14 +28,8 @@ namespace ContactDynamics
     std::string message;
     for (unsigned int p = 0; p < pairs.size() && message.empty(); ++p)
       {
-        const PairData &pair = pairs[p];
-        // the primary faces each node's patches found
-        std::vector<std::set<unsigned int>> faces(pair.secondary.n_nodes());
-        for (unsigned int e = 0; e < n_patches(pair); ++e)
-          if (pair.handled_patch[e])
-            for (const unsigned int j : patch_nodes(pair, e))
-              faces[j].insert(pair.candidates[e].begin(),
-                              pair.candidates[e].end());
+        const PairData &pair  = pairs[p];
+        const auto      faces = candidate_faces(pair);
         for (unsigned int j = 0;
              j < pair.secondary.n_nodes() && message.empty();
              ++j)
@@ -50,6 +44,18 @@ namespace ContactDynamics
         if (!m.empty())
           return m;
     return message;
+  }
+
+  template <int dim>
+  std::vector<std::set<unsigned int>>
+  SurfaceContact<dim>::candidate_faces(const PairData &pair) const
+  {
+    std::vector<std::set<unsigned int>> faces(pair.secondary.n_nodes());
+    for (unsigned int e = 0; e < n_patches(pair); ++e)
+      if (pair.handled_patch[e])
+        for (const unsigned int j : patch_nodes(pair, e))
+          faces[j].insert(pair.candidates[e].begin(), pair.candidates[e].end());
+    return faces;
   }
 
   template <int dim>
@@ -131,6 +137,8 @@ namespace ContactDynamics
 #define INSTANTIATE(dim)                                                   \
   template std::string SurfaceContact<dim>::check_step(const VectorType &) \
     const;                                                                 \
+  template std::vector<std::set<unsigned int>>                             \
+  SurfaceContact<dim>::candidate_faces(const PairData &) const;            \
   template std::string SurfaceContact<dim>::check_node(                    \
     const unsigned int,                                                    \
     const unsigned int,                                                    \

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -118,5 +119,26 @@ namespace ContactDynamics
         n += Tensor<1, 2>({t[1], -t[0]}) / t.norm();
       }
     return n / n.norm();
+  }
+
+  double
+  depth_behind_surface(const ContactSurface<2>      &surface,
+                       const std::set<unsigned int> &faces,
+                       const Point<2>               &x,
+                       const VectorType             &u)
+  {
+    double signed_distance = std::numeric_limits<double>::quiet_NaN();
+    for (const unsigned int e : faces)
+      {
+        const Point<2>     a  = surface.position(surface.faces[e][0], u);
+        const Tensor<1, 2> t  = surface.position(surface.faces[e][1], u) - a;
+        const double       xi = (x - a) * t / (t * t);
+        if (xi < -1e-10 || xi > 1 + 1e-10)
+          continue;
+        const double d = cross(x - a, t) / t.norm();
+        if (!(std::abs(d) >= std::abs(signed_distance)))
+          signed_distance = d;
+      }
+    return -signed_distance;
   }
 } // namespace ContactDynamics

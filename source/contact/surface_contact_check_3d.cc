@@ -7,6 +7,8 @@
 #include <contact_dynamics/contact/surface_geometry_3d.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace ContactDynamics
@@ -33,6 +35,24 @@ namespace ContactDynamics
         ClippingGeometry::interpolate(face_nodes(surface, face, u), 0.5, 0.5));
     }
 
+    // x's distance in front of the bilinear face (along its normal at the
+    // closest point), NaN if x does not project onto the face
+    double
+    distance_in_front(const std::array<ClippingGeometry::Vec3<double>, 4> &x,
+                      const Point<3>                                      &p)
+    {
+      using namespace ClippingGeometry;
+      double       xi, eta;
+      const double margin = 1e-10;
+      if (!closest_point(x, p, xi, eta) || xi < -margin || eta < -margin ||
+          xi > 1 + margin || eta > 1 + margin)
+        return std::numeric_limits<double>::quiet_NaN();
+      const auto   t = tangents(x, xi, eta);
+      Vec3<double> n = ClippingGeometry::cross(t[0], t[1]);
+      n /= norm(n);
+      return (p - interpolate(x, xi, eta)) * n;
+    }
+
     // 3-D: how far the point x1 (x0 at the last step) lies behind the
     // bilinear face at the state u (committed_u), if it projects onto the
     // face at both states and was in front of it before; else 0. (The
@@ -45,21 +65,14 @@ namespace ContactDynamics
                       const VectorType        &committed_u,
                       const VectorType        &u)
     {
-      using namespace ClippingGeometry;
       double signed_distance[2];
       for (unsigned int k = 0; k < 2; ++k)
         {
-          const auto   x = face_nodes(surface, face, k == 0 ? committed_u : u);
-          const auto  &p = k == 0 ? x0 : x1;
-          double       xi, eta;
-          const double margin = 1e-10;
-          if (!closest_point(x, p, xi, eta) || xi < -margin || eta < -margin ||
-              xi > 1 + margin || eta > 1 + margin)
+          signed_distance[k] = distance_in_front(
+            face_nodes(surface, face, k == 0 ? committed_u : u),
+            k == 0 ? x0 : x1);
+          if (std::isnan(signed_distance[k]))
             return 0;
-          const auto   t = tangents(x, xi, eta);
-          Vec3<double> n = ClippingGeometry::cross(t[0], t[1]);
-          n /= norm(n);
-          signed_distance[k] = (p - interpolate(x, xi, eta)) * n;
         }
       return signed_distance[0] >= 0 && signed_distance[1] < 0 ?
                -signed_distance[1] :
@@ -106,5 +119,21 @@ namespace ContactDynamics
     for (unsigned int d = 0; d < 3; ++d)
       result[d] = n[d];
     return result;
+  }
+
+  double
+  depth_behind_surface(const ContactSurface<3>      &surface,
+                       const std::set<unsigned int> &faces,
+                       const Point<3>               &x,
+                       const VectorType             &u)
+  {
+    double signed_distance = std::numeric_limits<double>::quiet_NaN();
+    for (const unsigned int e : faces)
+      {
+        const double d = distance_in_front(face_nodes(surface, e, u), x);
+        if (!std::isnan(d) && !(std::abs(d) >= std::abs(signed_distance)))
+          signed_distance = d;
+      }
+    return -signed_distance;
   }
 } // namespace ContactDynamics

@@ -4,6 +4,8 @@
 // positions at committed_u to those at u) and ends deeper than the tolerance
 // behind it; empty if it did not. And the outward unit normal of a
 // surface at a node (the mean of its faces' normals) in the configuration u.
+// And how deep a point x lies behind the nearest of the faces it projects
+// onto (negative: in front), or NaN if it projects onto none.
 #ifndef contact_dynamics_contact_face_passage_h
 #define contact_dynamics_contact_face_passage_h
 
@@ -39,10 +41,22 @@ namespace ContactDynamics
                  const unsigned int       node,
                  const VectorType        &u);
 
+  double
+  depth_behind_surface(const ContactSurface<2>      &surface,
+                       const std::set<unsigned int> &faces,
+                       const Point<2>               &x,
+                       const VectorType             &u);
+
   Tensor<1, 3>
   outward_normal(const ContactSurface<3> &surface,
                  const unsigned int       node,
                  const VectorType        &u);
+
+  double
+  depth_behind_surface(const ContactSurface<3>      &surface,
+                       const std::set<unsigned int> &faces,
+                       const Point<3>               &x,
+                       const VectorType             &u);
 } // namespace ContactDynamics
 
 #endif

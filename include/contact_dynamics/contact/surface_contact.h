@@ -127,10 +127,7 @@ namespace ContactDynamics
     double
     obstacle_work() const override;
 
-    /**
-     * Rejects a step in which a secondary node went through a primary face
-     * unnoticed: see doc/contact.md, "Search" for the rule.
-     */
+    /** Rejects a step with a missed contact: doc/contact.md, "Search". */
     std::string
     check_step(const VectorType &u) const override;
 
@@ -368,6 +365,9 @@ namespace ContactDynamics
                const unsigned int            j,
                const std::set<unsigned int> &faces,
                const VectorType             &u) const;
+    /** Per secondary node, the primary faces its patches found. */
+    std::vector<std::set<unsigned int>>
+    candidate_faces(const PairData &pair) const;
 
     /** Makes the node states of all processes' nodes known everywhere. */
     void
