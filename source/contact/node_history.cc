@@ -21,31 +21,35 @@ namespace ContactDynamics
         if (!context.reevaluation)
           held[p].clear();
         for (unsigned int j = 0; j < pair.nodes.size(); ++j)
-        {
-          ContactNodeState &node = pair.nodes[j];
-          // a node held in contact through the step carries the Newmark
-          // rates of its gap (zero); any other starts holding with the rate
-          // of its velocities: the Newmark recursion of a gap that moves
-          // freely (over the kinks of sliding faces) rings from step to step
-          const bool held_in_contact = node.persistent && node.active;
-          node.held_gap              = node.normalized_gap();
-          node.held_rate             = !node.projected ? 0. :
-                                       held_in_contact ? node.gap_rate :
-                                                         node.velocity_rate;
-          node.held_acceleration =
-            node.projected && held_in_contact ? node.gap_acceleration : 0.;
-          node.persistent =
-            complementarity.holds_contact() && node.projected &&
-            node.normalized_gap() <= complementarity.capture_tolerance;
-          if (pair.owned_node[j])
-            {
-              gap_field(pair.secondary.dofs[j][dim]) = node.normalized_gap();
-              for (unsigned int a = 0; a + 1 < dim; ++a)
-                slip_field[a](pair.secondary.dofs[j][dim]) = node.slip_rate[a];
-            }
-          pair.position[j] = pair.secondary.position(j, *context.u);
-          keep_held(p, j, context.reevaluation);
-        }
+          {
+            ContactNodeState &node = pair.nodes[j];
+            // a node held in contact through the step carries the Newmark
+            // rates of its gap (zero); any other starts holding with the rate
+            // of its velocities: the Newmark recursion of a gap that moves
+            // freely (over the kinks of sliding faces) rings from step to step
+            const bool held_in_contact = node.persistent && node.active;
+            node.held_gap              = node.normalized_gap();
+            // (Capture = position: it starts at rest, holding its gap)
+            node.held_rate = !node.projected ? 0. :
+                             held_in_contact ? node.gap_rate :
+                             complementarity.capture_at_position ?
+                                               0. :
+                                               node.velocity_rate;
+            node.held_acceleration =
+              node.projected && held_in_contact ? node.gap_acceleration : 0.;
+            node.persistent =
+              complementarity.holds_contact() && node.projected &&
+              node.normalized_gap() <= complementarity.capture_tolerance;
+            if (pair.owned_node[j])
+              {
+                gap_field(pair.secondary.dofs[j][dim]) = node.normalized_gap();
+                for (unsigned int a = 0; a + 1 < dim; ++a)
+                  slip_field[a](pair.secondary.dofs[j][dim]) =
+                    node.slip_rate[a];
+              }
+            pair.position[j] = pair.secondary.position(j, *context.u);
+            keep_held(p, j, context.reevaluation);
+          }
       }
     gap_field.compress(VectorOperation::insert);
     for (auto &field : slip_field)
@@ -63,9 +67,8 @@ namespace ContactDynamics
     if (!reevaluation)
       {
         if (node.persistent)
-          held[p][key] = {{node.held_gap,
-                           node.held_rate,
-                           node.held_acceleration}};
+          held[p][key] = {
+            {node.held_gap, node.held_rate, node.held_acceleration}};
         return;
       }
     const auto before = held[p].find(key);

@@ -32,8 +32,10 @@ namespace ContactDynamics
     bool          normalize_c_n = true;
     Stabilization stabilization;
     double        capture_tolerance = 1e-5;
-    bool          exact_jacobian    = true;
-    double        c_t               = 1e4;
+    // a node's first held step keeps its captured gap (no dt/2 sinking)
+    bool   capture_at_position = false;
+    bool   exact_jacobian      = true;
+    double c_t                 = 1e4;
 
     /** The formulations differ in the default stabilization only. */
     explicit ComplementarityParameters(
