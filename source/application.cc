@@ -64,6 +64,10 @@ namespace ContactDynamics
       std::exception_ptr failure;
       {
         std::unique_ptr<Simulator<dim>> simulator;
+        // from the start of the setup: a signal during it stops the run at
+        // step 0 with its checkpoint (doc/restart.md), not silently
+        if (!validate_only)
+          install_stop_handlers();
         check_collectively(comm, [&]() {
           simulator = std::make_unique<Simulator<dim>>(prm, screen, comm);
         });
@@ -91,7 +95,6 @@ namespace ContactDynamics
                     });
                 }
             });
-            install_stop_handlers();
             simulator->run(checkpoint);
           }
         catch (...)
@@ -436,6 +439,12 @@ namespace ContactDynamics
     // 7.7 s instead of 5.0 s (TBB's idle workers take the core from the
     // solver) and the ironing no faster (the bulk assembly's scatter into
     // the Epetra matrix is serial); doc/parallel.md.
+    // a signal from here on stops a run at step 0 with its checkpoint
+    // (doc/restart.md); --validate, --help and --print-parameters keep the
+    // default action
+    if (argc >= 2 && (std::string(argv[1]) == "--restart" ||
+                      std::string(argv[1]).rfind("--", 0) != 0))
+      install_stop_handlers();
     unsigned int n_threads = 1;
     if (!threads_per_process(n_threads))
       return 1;

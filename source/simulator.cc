@@ -550,15 +550,17 @@ namespace ContactDynamics
                 ExcCollective(
                   "Newton did not converge in 3 attempts in a row at t = " +
                   format_number(time) + " (last: " + last_failure +
-                  ", residual " +
-                  format_number(solved.newton.final_residual) +
+                  ", residual " + format_number(solved.newton.final_residual) +
                   ") with Nonlinear solver/Linear solver = AMG on a "
                   "quasi-static problem: the multigrid solve of the "
                   "condensed contact system is not exact enough for "
                   "Newton's tolerance here, and cutting the step does not "
                   "change that. Use Linear solver = KLU, MUMPS or auto "
-                  "(auto takes a direct solver for quasi-static runs). The "
-                  "outputs up to the last step are complete."));
+                  "(auto takes a direct solver for quasi-static runs); if "
+                  "that fails as well, a body is not held (quasi-static "
+                  "needs every body held by Dirichlet conditions or "
+                  "contact). The outputs up to the last step are "
+                  "complete."));
   }
 
   template <int dim>

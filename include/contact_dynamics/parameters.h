@@ -10,6 +10,8 @@
 #include <deal.II/base/patterns.h>
 
 #include <initializer_list>
+#include <iostream>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,6 +28,30 @@ namespace ContactDynamics
   /** x with 6 significant digits, as an ostream writes it (1e-07). */
   std::string
   format_number(const double x);
+
+  /**
+   * While alive, std::cerr writes into a buffer that is dropped: deal.II's
+   * FunctionParser dumps muparser's error there before it throws, and the
+   * caller's message says it in the parameter's terms.
+   */
+  class SilencedStdErr
+  {
+  public:
+    SilencedStdErr()
+      : buffer(std::cerr.rdbuf(dump.rdbuf()))
+    {}
+    ~SilencedStdErr()
+    {
+      std::cerr.rdbuf(buffer);
+    }
+    SilencedStdErr(const SilencedStdErr &) = delete;
+    SilencedStdErr &
+    operator=(const SilencedStdErr &) = delete;
+
+  private:
+    std::ostringstream dump;
+    std::streambuf    *buffer;
+  };
 
   /**
    * The text of a default in the parameter file: format_number() without

@@ -3,6 +3,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <contact_dynamics/contact/rigid_obstacle.h>
+#include <contact_dynamics/parallel.h>
 #include <contact_dynamics/parameters.h>
 
 #include <cmath>
@@ -29,7 +30,8 @@ namespace ContactDynamics
     std::shared_ptr<Function<1>>
     function_of_time(const std::string &expression, const std::string &where)
     {
-      auto f = std::make_shared<FunctionParser<1>>(1);
+      auto                 f = std::make_shared<FunctionParser<1>>(1);
+      const SilencedStdErr silenced;
       try
         {
           f->initialize("t", expression, {{"pi", numbers::PI}});
@@ -243,8 +245,9 @@ namespace ContactDynamics
       finite = finite && std::isfinite(where.center[d]) &&
                std::isfinite(where.velocity[d]) &&
                std::isfinite(where.direction[d]);
+    // (every process places every obstacle: the same error on all)
     AssertThrow(finite,
-                ExcMessage(
+                ExcCollective(
                   "The rigid obstacle '" + parameters.name +
                   "' has no finite position or velocity at t = " +
                   format_number(t) +

@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <contact_dynamics/mechanics/bodies.h>
+#include <contact_dynamics/parameters.h>
 
 #include <iostream>
 #include <sstream>
@@ -21,17 +22,7 @@ namespace ContactDynamics
       std::string variables = FunctionParser<dim>::default_variable_names();
       if (time_dependent)
         variables += ",t";
-      // deal.II dumps muparser's error to std::cerr before it throws; the
-      // message below says it in the parameter's terms
-      std::ostringstream muparser_dump;
-      struct RestoreCerr
-      {
-        std::streambuf *buffer;
-        ~RestoreCerr()
-        {
-          std::cerr.rdbuf(buffer);
-        }
-      } restore{std::cerr.rdbuf(muparser_dump.rdbuf())};
+      const SilencedStdErr silenced;
       try
         {
           FunctionParser<dim> f(1);

@@ -7,6 +7,7 @@
 
 #include <contact_dynamics/mechanics/bodies.h>
 #include <contact_dynamics/mechanics/boundary_conditions.h>
+#include <contact_dynamics/parallel.h>
 
 #include <cmath>
 #include <sstream>
@@ -143,6 +144,7 @@ namespace ContactDynamics
   {
     std::map<types::global_dof_index, double> result;
     const unsigned int n_components = dof_handler.get_fe().n_components();
+    std::string        failure;
     for (const Condition &c : conditions)
       {
         c.function->set_time(time);
@@ -171,11 +173,17 @@ namespace ContactDynamics
                       << why << ": the expression '" << c.expression
                       << "' must be finite at every time of the run on "
                          "every node of the surface.";
-              AssertThrow(false, ExcMessage(message.str()));
+              if (failure.empty())
+                failure = message.str();
             }
         for (const auto &p : these)
           result[p.first] = p.second;
       }
+    // (a process whose part of the surface is finite must stop as well:
+    // one message under mpirun, no abort)
+    check_collectively(dof_handler.get_communicator(), [&]() {
+      AssertThrow(failure.empty(), ExcMessage(failure));
+    });
     return result;
   }
 

@@ -190,8 +190,12 @@ namespace ContactDynamics
         const double J = determinant(F);
         AssertThrow(J > 0 && std::isfinite(J),
                     ExcMessage(
-                      "Inverted element: det F = " + std::to_string(J) +
-                      " <= 0 in a neo-Hookean body."));
+                      "Inverted element: det F = " + format_number(J) +
+                      " <= 0 in a neo-Hookean body, displacement gradient "
+                      "of norm " +
+                      format_number(grad_u.norm()) +
+                      " (at t = 0: the body's Initial displacement; in a "
+                      "step: a step too large for the load or the contact)"));
         const double         lambda = this->parameters_.lame_lambda();
         const double         mu     = this->parameters_.shear_modulus();
         const double         lnJ    = std::log(J);

@@ -143,14 +143,21 @@ namespace ContactDynamics
           {
             std::ostringstream reason;
             e.print_info(reason);
-            AssertThrow(false,
-                        ExcMessage(
-                          mesh_file_error_prefix(file) +
-                          "could not be read by GridIn::read_msh():\n" +
-                          reason.str() +
-                          "(A common cause: a tagged line between two bodies "
-                          "that share nodes. Mesh touching bodies with their "
-                          "own nodes and faces.)"));
+            // the hint only where deal.II saw a tagged interior face
+            const bool interior =
+              reason.str().find("boundary id for an internal face") !=
+              std::string::npos;
+            AssertThrow(
+              false,
+              ExcMessage(
+                mesh_file_error_prefix(file) +
+                "could not be read by GridIn::read_msh():\n" + reason.str() +
+                (interior ? "(A tagged line or face between two bodies "
+                            "that share nodes: mesh touching bodies with "
+                            "their own nodes and faces.)" :
+                            "(The file is not a valid Gmsh 2.2 or 4 ASCII "
+                            "mesh: a number that does not parse, a section "
+                            "shorter than its count, or a cut file.)")));
           }
       }
 

@@ -1,10 +1,14 @@
 #include <deal.II/base/exceptions.h>
 
+#include <deal.II/grid/tria.h>
+
 #include <contact_dynamics/parameters.h>
 #include <contact_dynamics/scenes/scene.h>
 #include <contact_dynamics/scenes/scene_registry.h>
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 
 namespace ContactDynamics
 {
@@ -17,6 +21,56 @@ namespace ContactDynamics
         if (entry.name == name)
           return &entry;
       return nullptr;
+    }
+
+    // The Jacobian determinant of the (bi-, tri-)linear cell at vertex v:
+    // the edges from v along each coordinate direction of the reference
+    // cell, oriented from the lower to the upper face
+    template <int dim>
+    double
+    corner_determinant(const typename Triangulation<dim>::cell_iterator &cell,
+                       const unsigned int                                v)
+    {
+      Tensor<2, dim> J;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const unsigned int lower = v & ~(1u << d), upper = v | (1u << d);
+          for (unsigned int k = 0; k < dim; ++k)
+            J[k][d] = cell->vertex(upper)[k] - cell->vertex(lower)[k];
+        }
+      return determinant(J);
+    }
+
+    // A coarse cell whose map is folded or flat at a corner (two vertices
+    // coincide, a bow tie, a negative orientation) has no stiffness there:
+    // the run would blame an inverted element later, or not at all.
+    template <int dim>
+    void
+    check_cell_shapes(const Triangulation<dim> &triangulation,
+                      const std::string        &scene)
+    {
+      for (const auto &cell : triangulation.cell_iterators_on_level(0))
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const double det  = corner_determinant<dim>(cell, v);
+            const double size = std::pow(cell->diameter(), dim);
+            if (det > 1e-10 * size)
+              continue;
+            std::ostringstream message;
+            message << "Scene = " << scene << ": the cell with vertices";
+            for (const unsigned int w : cell->vertex_indices())
+              message << (w ? ", (" : " (") << cell->vertex(w) << ')';
+            message << " is " << (det < 0 ? "inverted" : "degenerate")
+                    << " at its vertex (" << cell->vertex(v)
+                    << "): the Jacobian determinant there is " << det
+                    << ", against " << size
+                    << " for its size (diameter^dim). Two vertices "
+                       "coincide, the cell is folded, its vertices are not "
+                       "in Gmsh's order, or it is flatter than 1e-10; "
+                       "correct the mesh (Scene/Mesh file) or the scene's "
+                       "sizes.";
+            AssertThrow(false, ExcMessage(message.str()));
+          }
     }
 
     // The documentation of Scene/Scene: every scene, where it exists and
@@ -144,6 +198,7 @@ namespace ContactDynamics
   {
     Assert(scene, ExcMessage("Scene::parse_parameters() was not called."));
     scene->create_triangulation(triangulation);
+    check_cell_shapes(triangulation, scene_name);
   }
 
 

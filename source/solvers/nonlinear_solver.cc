@@ -6,6 +6,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <contact_dynamics/parallel.h>
 #include <contact_dynamics/parameters.h>
 #include <contact_dynamics/solvers/nonlinear_solver.h>
 
@@ -162,9 +163,7 @@ namespace ContactDynamics
       }
     catch (const ExceptionBase &e)
       {
-        std::ostringstream message;
-        e.print_info(message);
-        result.failure = Utilities::trim(message.str());
+        result.failure = exception_message(e);
       }
     catch (const std::exception &e)
       {
@@ -223,7 +222,9 @@ namespace ContactDynamics
       }
     catch (const std::exception &e)
       {
-        result.failure = std::string("the linear solver failed: ") + e.what();
+        // (the message alone: deal.II's what() carries a stack trace)
+        result.failure =
+          std::string("the linear solver failed: ") + exception_message(e);
         linear_solver.invalidate_after_failure();
         return false;
       }
