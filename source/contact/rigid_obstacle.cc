@@ -6,7 +6,9 @@
 #include <contact_dynamics/parallel.h>
 #include <contact_dynamics/parameters.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ContactDynamics
 {
@@ -213,6 +215,32 @@ namespace ContactDynamics
     Tensor<2, dim> R;
     set_rotation(c, s, rotation_axis, R);
     return R;
+  }
+
+  template <int dim>
+  double
+  RigidObstacle<dim>::closest_approach(const Placement  &from,
+                                       const Placement  &to,
+                                       const Point<dim> &x0,
+                                       const Point<dim> &x1) const
+  {
+    if (parameters.shape == Shape::plane)
+      return std::numeric_limits<double>::infinity();
+    // the path in the obstacle's frame at t = 0 (rotations undone), without
+    // the component along a 3-D cylinder's axis
+    Tensor<1, dim> axis;
+    for (unsigned int d = 0; d < dim; ++d)
+      axis[d] = parameters.axis[d];
+    const auto radial = [&](const Placement &where, const Point<dim> &x) {
+      Tensor<1, dim> y = transpose(where.rotation) * (x - where.center);
+      if (parameters.shape == Shape::cylinder && dim == 3)
+        y -= (y * axis) * axis;
+      return y;
+    };
+    const Tensor<1, dim> a = radial(from, x0), b = radial(to, x1), d = b - a;
+    const double         s =
+      d.norm_square() > 0 ? std::clamp(-(a * d) / d.norm_square(), 0., 1.) : 0.;
+    return (a + s * d).norm();
   }
 
   template <int dim>

@@ -118,8 +118,29 @@ namespace ContactDynamics
     // (a node held in this step enforces its gap rate: it may end inactive
     // behind a face while it separates, within the depth above)
     // (a node behind an obstacle is projected: its gap says so)
-    if (node.active || node.persistent || pair.obstacle)
+    if (node.active || node.persistent)
       return {};
+    if (pair.obstacle)
+      {
+        // a cylinder or sphere that passed over the node within the step
+        // (a fast obstacle): its path relative to the obstacle went
+        // through the obstacle's inner half and out again. (A node sliding
+        // along the surface dips inside by the chord's sagitta only, below
+        // half the radius unless it slid by more than the diameter.)
+        const double closest =
+          pair.obstacle->closest_approach(pair.committed_place,
+                                          pair.trial_place,
+                                          x0,
+                                          x1);
+        if (closest >= 0.5 * pair.obstacle->radius())
+          return {};
+        failure << "was passed by the rigid obstacle within this step: its "
+                   "path relative to the obstacle came within "
+                << closest << " of its center or axis (Radius = "
+                << pair.obstacle->radius()
+                << "), but its contact condition is not active";
+        return failure.str();
+      }
     const std::string passage =
       passage_through_face(pair.primary,
                            faces,

@@ -149,6 +149,19 @@ namespace ContactDynamics
       return parameters.shape == Shape::plane ? 1e300 : parameters.radius;
     }
 
+    /**
+     * How close to the axis or center of a cylinder or sphere a point
+     * came that moved from x0 (obstacle at `from`) to x1 (at `to`): the
+     * smallest distance along its straight path relative to the obstacle,
+     * in the obstacle's own frame. A plane: infinity (it has no inside to
+     * pass through).
+     */
+    double
+    closest_approach(const Placement  &from,
+                     const Placement  &to,
+                     const Point<dim> &x0,
+                     const Point<dim> &x1) const;
+
     /** The radius of a cylinder or sphere; 0 for a plane. */
     double
     radius() const

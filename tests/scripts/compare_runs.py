@@ -1,0 +1,47 @@
+# usage: compare_runs.py LABEL REFERENCE_DIR RUN_DIR
+# Two runs of the same scene that should agree to round-off (a restarted
+# run against one never stopped, another process count): statistics.csv
+# row by row and every contact_surface-*.csv of the reference, column by
+# column, relative to each column's largest magnitude in the reference.
+import csv, glob, os, sys
+
+label, ref, run = sys.argv[1:4]
+# (timings and solver counts; "node" is the surface's internal numbering,
+# which a mesh rebuilt from a checkpoint may order differently: the rows
+# are in the same order of position)
+skip = {"wall_time", "final_residual", "linear_iterations", "node"}
+
+
+def table(path):
+    rows = list(csv.reader(open(path)))
+    return rows[0], [[float(x) for x in r] for r in rows[1:]]
+
+
+def worst_difference(path_a, path_b):
+    head, a = table(path_a)
+    _, b = table(path_b)
+    if len(a) != len(b):
+        return None
+    worst = 0.
+    for k, name in enumerate(head):
+        if name in skip:
+            continue
+        scale = max(abs(r[k]) for r in a) or 1
+        worst = max([worst] + [abs(x[k] - y[k]) / scale for x, y in zip(a, b)])
+    return worst
+
+
+files = ["statistics.csv"] + sorted(
+    os.path.basename(f) for f in glob.glob(ref + "/contact_surface-*.csv"))
+worst, differ = 0., []
+for f in files:
+    d = worst_difference(os.path.join(ref, f), os.path.join(run, f)) \
+        if os.path.exists(os.path.join(run, f)) else None
+    if d is None:
+        differ.append(f)
+    else:
+        worst = max(worst, d)
+print("%s: %d files compared, %s, largest difference %.2e %s" % (
+    label, len(files),
+    "rows equal" if not differ else "rows differ in " + ", ".join(differ),
+    worst, "within 1e-8" if worst <= 1e-8 else "beyond 1e-8"))
