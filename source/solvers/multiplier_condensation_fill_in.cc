@@ -14,10 +14,12 @@ namespace ContactDynamics
   MultiplierCondensation::fill_in(const DynamicSparsityPattern       &pattern,
                                   const std::vector<MultiplierGroup> &groups)
   {
+    // (not begin(row): for a row without entries it walks on to the next
+    // stored row, O(n) per call)
     const auto columns_of = [&](const Index row) {
-      std::vector<Index> columns;
-      for (auto it = pattern.begin(row); it != pattern.end(row); ++it)
-        columns.push_back(it->column());
+      std::vector<Index> columns(pattern.row_length(row));
+      for (unsigned int k = 0; k < columns.size(); ++k)
+        columns[k] = pattern.column_number(row, k);
       return columns;
     };
     const auto sorted = [](std::vector<Index> v) {
