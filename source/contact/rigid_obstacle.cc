@@ -226,15 +226,14 @@ namespace ContactDynamics
   {
     if (parameters.shape == Shape::plane)
       return std::numeric_limits<double>::infinity();
-    // the path in the obstacle's frame at t = 0 (rotations undone), without
-    // the component along a 3-D cylinder's axis
-    Tensor<1, dim> axis;
-    for (unsigned int d = 0; d < dim; ++d)
-      axis[d] = parameters.axis[d];
+    // the path relative to the center, without the component along a 3-D
+    // cylinder's axis; a rotation about the center or the axis moves no
+    // point of the surface in or out (undoing it would turn a node at rest
+    // into a chord through the obstacle)
     const auto radial = [&](const Placement &where, const Point<dim> &x) {
-      Tensor<1, dim> y = transpose(where.rotation) * (x - where.center);
+      Tensor<1, dim> y = x - where.center;
       if (parameters.shape == Shape::cylinder && dim == 3)
-        y -= (y * axis) * axis;
+        y -= (y * where.direction) * where.direction;
       return y;
     };
     const Tensor<1, dim> a = radial(from, x0), b = radial(to, x1), d = b - a;

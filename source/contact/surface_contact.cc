@@ -55,6 +55,20 @@ namespace ContactDynamics
                                                       &search})
       history.add(*owner);
     history.add(std::make_unique<CaptureCount<dim>>(pairs));
+    using Stabilization = ComplementarityParameters::Stabilization;
+    AssertThrow(
+      !complementarity.capture_at_position ||
+        complementarity.stabilization == Stabilization::persistency ||
+        complementarity.stabilization == Stabilization::velocity_update,
+      ExcMessage(
+        std::string("Contact/") +
+        (contact.formulation == ContactParameters::Formulation::mortar ?
+           "Mortar" :
+           "Node to segment") +
+        "/Capture = position applies to Stabilization = "
+        "persistency or velocity update only (it sets how a held "
+        "node starts): set Capture = rate, or change that "
+        "subsection's Stabilization."));
   }
 
   template <int dim>
@@ -403,6 +417,48 @@ namespace ContactDynamics
                              "): its gaps would be lost to round-off. Use "
                              "Shape = plane."));
     }
+
+    // How deep each node of a meshed pair lies in the other body at t = 0,
+    // by its own distance behind the nearest face it projects onto: a
+    // secondary node behind the primary faces its patches found, and the
+    // nodes of those faces behind the secondary faces around it (a primary
+    // corner between two secondary nodes). The weighted gap (dual basis
+    // functions change sign) is negative under a curved surface over
+    // coarse faces that touches nothing (hertz_adaptive at factor 0.2): it
+    // counts only for a node that projects onto none of the faces.
+    template <int dim, typename Report>
+    void
+    meshed_pair_depths(const ContactPairData<dim>                &pair,
+                       const std::vector<std::set<unsigned int>> &faces,
+                       const VectorType                          &u,
+                       const Report                              &report)
+    {
+      const auto &s = pair.secondary, &p = pair.primary;
+      for (unsigned int j = 0; j < s.n_nodes(); ++j)
+        {
+          double depth = -pair.nodes[j].normalized_gap();
+          if (!faces[j].empty())
+            {
+              const double own =
+                depth_behind_surface(p, faces[j], s.position(j, u), u);
+              if (!std::isnan(own))
+                depth = own;
+              const std::set<unsigned int> around(s.node_faces[j].begin(),
+                                                  s.node_faces[j].end());
+              for (const unsigned int f : faces[j])
+                for (const unsigned int k : p.faces[f])
+                  {
+                    const double d =
+                      depth_behind_surface(s, around, p.position(k, u), u);
+                    if (!std::isnan(d))
+                      report(d, "primary", p.reference[k]);
+                  }
+            }
+          else if (!pair.owned_node[j])
+            continue; // its owner judges it
+          report(depth, "secondary", s.reference[j]);
+        }
+    }
   } // namespace
 
   template <int dim>
@@ -414,51 +470,50 @@ namespace ContactDynamics
       if (pairs[p].obstacle)
         check_obstacle_radius(pairs[p], contact.pairs[p].name, u);
     double       worst = 0;
-    unsigned int pair = 0, node = 0;
+    unsigned int pair  = 0;
+    std::string  node;
+    const auto   deeper = [&](const double       depth,
+                            const unsigned int p,
+                            const char        *side,
+                            const Point<dim>  &reference) {
+      if (depth > worst)
+        {
+          worst = depth;
+          pair  = p;
+          node  = std::string(side) + " node at " + coordinates(reference);
+        }
+    };
     for (unsigned int p = 0; p < pairs.size(); ++p)
       {
-        const auto faces = candidate_faces(pairs[p]);
-        for (unsigned int j = 0; j < pairs[p].nodes.size(); ++j)
-          {
-            // a node's depth is its own distance behind the primary face or
-            // obstacle: a weighted gap (dual basis functions change sign) is
-            // negative under a curved surface over coarse faces that touches
-            // nothing (hertz_adaptive at factor 0.2), and the search finds
-            // no gap for a node deep inside an obstacle
-            const auto &s     = pairs[p].secondary;
-            double      depth = -pairs[p].nodes[j].normalized_gap();
-            if (!pairs[p].obstacle && !faces[j].empty())
-              {
-                // the owner judges by the faces it found (where the node
-                // projects onto none, by its weighted gap)
-                const double own =
-                  depth_behind_surface(pairs[p].primary,
-                                       faces[j],
-                                       pairs[p].secondary.position(j, u),
-                                       u);
-                if (!std::isnan(own))
-                  depth = own;
-              }
-            else if (!pairs[p].obstacle && !pairs[p].owned_node[j])
-              depth = 0;
-            if (pairs[p].obstacle)
-              {
-                // (every node on every process, as check_obstacle_side())
-                Tensor<1, dim> x(s.reference[j]), normal;
-                for (unsigned int d = 0; d < dim; ++d)
-                  x[d] += u(s.dofs[j][d]);
-                depth =
-                  -pairs[p].obstacle->signed_distance(pairs[p].committed_place,
-                                                      x,
-                                                      normal);
-              }
-            if (depth > worst)
-              {
-                worst = depth;
-                pair  = p;
-                node  = j;
-              }
-          }
+        const auto &s = pairs[p].secondary;
+        if (pairs[p].obstacle)
+          for (unsigned int j = 0; j < s.n_nodes(); ++j)
+            {
+              // its own signed distance (every node on every process, as
+              // check_obstacle_side()): the search finds no gap for a node
+              // deep inside, and a weighted gap (dual basis functions
+              // change sign) is negative under a curved obstacle over
+              // coarse faces that touches nothing
+              Tensor<1, dim> x(s.reference[j]), normal;
+              for (unsigned int d = 0; d < dim; ++d)
+                x[d] += u(s.dofs[j][d]);
+              deeper(
+                -pairs[p].obstacle->signed_distance(pairs[p].committed_place,
+                                                    x,
+                                                    normal),
+                p,
+                "the",
+                s.reference[j]);
+            }
+        else
+          meshed_pair_depths(pairs[p],
+                             candidate_faces(pairs[p]),
+                             u,
+                             [&](const double      depth,
+                                 const char       *side,
+                                 const Point<dim> &reference) {
+                               deeper(depth, p, side, reference);
+                             });
       }
     if (worst > complementarity.capture_tolerance)
       report_initial_overlap(worst, pair, node, log);
@@ -471,23 +526,20 @@ namespace ContactDynamics
   void
   SurfaceContact<dim>::report_initial_overlap(const double       worst,
                                               const unsigned int pair,
-                                              const unsigned int node,
+                                              const std::string &node,
                                               std::ostream      &log) const
   {
     std::ostringstream where;
     if (pairs[pair].obstacle)
       where << "A node of pair '" << contact.pairs[pair].name
-            << "' lies inside the rigid obstacle at t = 0, by " << worst
-            << " (the node at "
-            << coordinates(pairs[pair].secondary.reference[node])
-            << " in the reference configuration; Capture tolerance = "
+            << "' lies inside the rigid obstacle at t = 0, by " << worst << " ("
+            << node << " in the reference configuration; Capture tolerance = "
             << complementarity.capture_tolerance
             << "; a plane's Normal must point to the body, a cylinder or "
                "sphere must lie outside it)";
     else
       where << "The bodies overlap at t = 0 by up to " << worst << " (pair '"
-            << contact.pairs[pair].name << "', secondary node at "
-            << coordinates(pairs[pair].secondary.reference[node])
+            << contact.pairs[pair].name << "', " << node
             << " in the reference configuration; Capture tolerance = "
             << complementarity.capture_tolerance << ")";
     AssertThrow(contact.allow_initial_penetration,

@@ -145,16 +145,7 @@ namespace ContactDynamics
     stabilization       = stabilization_names.value(prm.get("Stabilization"));
     capture_tolerance   = prm.get_double("Capture tolerance");
     capture_at_position = prm.get("Capture") == "position";
-    AssertThrow(
-      !capture_at_position || stabilization == Stabilization::persistency ||
-        stabilization == Stabilization::velocity_update,
-      ExcMessage(
-        "Contact/Mortar (or Node to segment)/Capture = position applies to Stabilization = "
-        "persistency or velocity update only, not to "
-        "Stabilization = " +
-        prm.get("Stabilization") +
-        ": set Capture = rate, or change the "
-        "Stabilization."));
+    // (checked by the formulation that uses it: SurfaceContact)
     exact_jacobian = jacobian_names.value(prm.get("Jacobian"));
     c_t            = prm.get_double("c_t");
   }

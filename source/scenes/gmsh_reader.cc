@@ -155,9 +155,11 @@ namespace ContactDynamics
                 (interior ? "(A tagged line or face between two bodies "
                             "that share nodes: mesh touching bodies with "
                             "their own nodes and faces.)" :
-                            "(The file is not a valid Gmsh 2.2 or 4 ASCII "
-                            "mesh: a number that does not parse, a section "
-                            "shorter than its count, or a cut file.)")));
+                            "(GridIn reads Gmsh 2.2 or 4 ASCII files of "
+                            "linear quadrilaterals or hexahedra: another "
+                            "element type, a number that does not parse, a "
+                            "section shorter than its count or a cut file "
+                            "stops it.)")));
           }
       }
 

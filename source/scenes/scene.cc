@@ -50,27 +50,36 @@ namespace ContactDynamics
                       const std::string        &scene)
     {
       for (const auto &cell : triangulation.cell_iterators_on_level(0))
-        for (const unsigned int v : cell->vertex_indices())
-          {
-            const double det  = corner_determinant<dim>(cell, v);
-            const double size = std::pow(cell->diameter(), dim);
-            if (det > 1e-10 * size)
-              continue;
-            std::ostringstream message;
-            message << "Scene = " << scene << ": the cell with vertices";
-            for (const unsigned int w : cell->vertex_indices())
-              message << (w ? ", (" : " (") << cell->vertex(w) << ')';
-            message << " is " << (det < 0 ? "inverted" : "degenerate")
-                    << " at its vertex (" << cell->vertex(v)
-                    << "): the Jacobian determinant there is " << det
-                    << ", against " << size
-                    << " for its size (diameter^dim). Two vertices "
-                       "coincide, the cell is folded, its vertices are not "
-                       "in Gmsh's order, or it is flatter than 1e-10; "
-                       "correct the mesh (Scene/Mesh file) or the scene's "
-                       "sizes.";
-            AssertThrow(false, ExcMessage(message.str()));
-          }
+        {
+          AssertThrow(cell->reference_cell().is_hyper_cube(),
+                      ExcMessage("Scene = " + scene + ": the cell at " +
+                                 format_number(cell->center()[0]) + ", " +
+                                 format_number(cell->center()[1]) + " is a " +
+                                 cell->reference_cell().to_string() +
+                                 ": only quadrilaterals (2-D) and hexahedra "
+                                 "(3-D) are supported (Scene/Mesh file)."));
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const double det  = corner_determinant<dim>(cell, v);
+              const double size = std::pow(cell->diameter(), dim);
+              if (det > 1e-10 * size)
+                continue;
+              std::ostringstream message;
+              message << "Scene = " << scene << ": the cell with vertices";
+              for (const unsigned int w : cell->vertex_indices())
+                message << (w ? ", (" : " (") << cell->vertex(w) << ')';
+              message << " is " << (det < 0 ? "inverted" : "degenerate")
+                      << " at its vertex (" << cell->vertex(v)
+                      << "): the Jacobian determinant there is " << det
+                      << ", against " << size
+                      << " for its size (diameter^dim). Two vertices "
+                         "coincide, the cell is folded, its vertices are not "
+                         "in Gmsh's order, or it is flatter than 1e-10; "
+                         "correct the mesh (Scene/Mesh file) or the scene's "
+                         "sizes.";
+              AssertThrow(false, ExcMessage(message.str()));
+            }
+        }
     }
 
     // The documentation of Scene/Scene: every scene, where it exists and

@@ -27,7 +27,10 @@ def worst_difference(path_a, path_b):
         if name in skip:
             continue
         scale = max(abs(r[k]) for r in a) or 1
-        worst = max([worst] + [abs(x[k] - y[k]) / scale for x, y in zip(a, b)])
+        for x, y in zip(a, b):
+            d = abs(x[k] - y[k]) / scale
+            if not d <= worst:  # (a NaN counts as infinitely far)
+                worst = d if d == d else float("inf")
     return worst
 
 
@@ -41,7 +44,7 @@ for f in files:
         differ.append(f)
     else:
         worst = max(worst, d)
-print("%s: %d files compared, %s, largest difference %.2e %s" % (
-    label, len(files),
+print("%s: statistics and %d surface files compared, %s, largest difference %.2e %s" % (
+    label, len(files) - 1,
     "rows equal" if not differ else "rows differ in " + ", ".join(differ),
     worst, "within 1e-8" if worst <= 1e-8 else "beyond 1e-8"))

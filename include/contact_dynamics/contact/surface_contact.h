@@ -163,10 +163,10 @@ namespace ContactDynamics
     void
     check_initial_state(const VectorType &u, std::ostream &log) const override;
     void
-    report_initial_overlap(double        worst,
-                           unsigned int  pair,
-                           unsigned int  node,
-                           std::ostream &log) const;
+    report_initial_overlap(double             worst,
+                           unsigned int       pair,
+                           const std::string &node,
+                           std::ostream      &log) const;
 
     /**
      * The normalized gap and, with friction, the slip rates along the

@@ -1,0 +1,158 @@
+#!/usr/bin/env python3
+"""Whole runs split into setup and steps, against the number of unknowns.
+
+Issue 40: a setup that grows faster than the problem hides behind
+per-iteration figures. This runs the shipped ironing (2-D at Refinement
+factors 1-4, 3-D at three sizes) for three steps with the distributed mesh
+and the AMG solver, on 1 and 2 MPI processes, and splits each run's wall
+time (process start to exit) into the TimerOutput's `setup` (mesh, dofs,
+sparsity with the condensation's fill-in, contact surfaces), `initial
+conditions` (initial acceleration, contact check) and `Newton solve`, and
+the rest (library loading, mesh creation, parameter reading, output).
+
+  python3 benchmarks/setup_scaling.py [--processes 1 2] [--repeats 1]
+      [--factors-2d 1 2 3 4] [--factors-3d 1 1.5 2]
+
+Writes benchmarks/results/setup_scaling.csv (one row per run) and
+doc/setup-scaling-table.md (medians; setup per unknown and the growth
+exponent of setup between consecutive sizes: 1 is linear, 2 quadratic).
+"""
+import argparse
+import csv
+import math
+import os
+import re
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import bench_common  # noqa: E402
+
+REPO = Path(__file__).resolve().parent.parent
+SCENES = {"2-D": ("prm/ironing/mortar.prm", 0.03),
+          "3-D": ("prm/ironing/mortar_3d.prm", None)}
+SECTIONS = ["setup", "initial conditions", "Newton solve"]
+
+
+def parse(log):
+    """Seconds per timer section, TimerOutput total, unknowns, steps."""
+    result = {}
+    for line in log.splitlines():
+        cells = [c.strip() for c in line.split("|")]
+        if len(cells) >= 4 and cells[1] in SECTIONS:
+            result[cells[1]] = float(cells[3].rstrip("s"))
+        m = re.search(r"Total wallclock time elapsed since start\s*\|\s*([0-9.e+-]+)s", line)
+        if m:
+            result["total"] = float(m.group(1))
+        m = re.search(r"(\d+) unknowns", line)
+        if m and "unknowns" not in result:
+            result["unknowns"] = int(m.group(1))
+        m = re.search(r"after (\d+) steps", line)
+        if m:
+            result["steps"] = int(m.group(1))
+    return result
+
+
+def run_one(args, work, dim, factor, np_, repeat, env):
+    source, end_time = SCENES[dim]
+    name = f"{dim}_f{factor}_np{np_}_{repeat}"
+    prm = work / f"{name}.prm"
+    changes = {"Scene/Refinement factor": factor,
+               "Parallel/Mesh": "distributed",
+               "Nonlinear solver/Linear solver": "AMG",
+               "Output/Output directory": str(work / name),
+               "Output/VTU interval": 0}
+    # three steps: the 2-D ironing's dt is 0.01; the 3-D file's own
+    base = bench_common.prm_values(REPO / source, {})
+    dt = float(base.get("Time integration/Time step", 0.01))
+    changes["Time integration/End time"] = end_time if end_time else 3 * dt
+    bench_common.write_prm(prm, REPO / source, changes)
+    cmd = ["mpirun", "-np", str(np_), str(args.exe), str(prm)]
+    t0 = time.time()
+    p = subprocess.run(cmd, cwd=work, env=env, capture_output=True, text=True)
+    wall = time.time() - t0
+    (work / f"{name}.log").write_text(p.stdout + p.stderr)
+    info = parse(p.stdout)
+    row = dict(scene=dim, factor=factor, processes=np_, repeat=repeat,
+               status="ok" if p.returncode == 0 else "failed",
+               unknowns=info.get("unknowns", ""), steps=info.get("steps", ""),
+               process_wall_s=round(wall, 3), timer_total_s=info.get("total", ""))
+    for s in SECTIONS:
+        row[s.replace(" ", "_") + "_s"] = info.get(s, 0.0)
+    return row
+
+
+def table(rows, args):
+    def median(dim, factor, np_, key):
+        vals = [float(r[key]) for r in rows
+                if (r["scene"], r["factor"], r["processes"]) == (dim, factor, np_)
+                and r["status"] == "ok" and r[key] != ""]
+        return statistics.median(vals) if vals else float("nan")
+
+    out = ["| scene | factor | unknowns | processes | whole run (s) | setup (s) | setup per unknown (us) | growth exponent of setup | initial conditions (s) | Newton solves, 3 steps (s) | rest (s) |",
+           "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for dim, factors in (("2-D", args.factors_2d), ("3-D", args.factors_3d)):
+        for np_ in args.processes:
+            previous = None
+            for f in factors:
+                n = median(dim, f, np_, "unknowns")
+                wall = median(dim, f, np_, "process_wall_s")
+                setup = median(dim, f, np_, "setup_s")
+                init = median(dim, f, np_, "initial_conditions_s")
+                newton = median(dim, f, np_, "Newton_solve_s")
+                growth = "-"
+                if previous and previous[1] > 0 and setup > 0 and n > previous[0]:
+                    growth = f"{math.log(setup / previous[1]) / math.log(n / previous[0]):.2f}"
+                previous = (n, setup)
+                out.append(f"| {dim} | {f:g} | {n:,.0f} | {np_} | {wall:.3g} | {setup:.3g} | "
+                           f"{1e6 * setup / n:.3g} | {growth} | {init:.3g} | {newton:.3g} | "
+                           f"{wall - setup - init - newton:.3g} |")
+    load = os.getloadavg()
+    return ("<!-- generated by benchmarks/setup_scaling.py; do not edit -->\n"
+            f"Medians of {args.repeats} run(s) each, {os.cpu_count()} cores, load average at "
+            f"the end {load[0]:.2f}; {time.strftime('%Y-%m-%d')}. Whole run: process start "
+            "to exit under mpirun; sections from TimerOutput (maximum over processes); "
+            "rest: library loading, parameters, mesh creation, output.\n\n"
+            + "\n".join(out) + "\n")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--processes", type=int, nargs="+", default=[1, 2])
+    ap.add_argument("--repeats", type=int, default=1)
+    ap.add_argument("--factors-2d", type=float, nargs="+", default=[1, 2, 3, 4])
+    ap.add_argument("--factors-3d", type=float, nargs="+", default=[1, 1.5, 2])
+    ap.add_argument("--exe", type=Path, default=REPO / "build" / "contact-dynamics")
+    ap.add_argument("--results", type=Path, default=REPO / "benchmarks" / "results")
+    ap.add_argument("--table", type=Path, default=REPO / "doc" / "setup-scaling-table.md")
+    args = ap.parse_args()
+    if not args.exe.is_file():
+        sys.exit(f"{args.exe} is missing: build it first (./run.sh build)")
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_rmaps_base_oversubscribe="1")
+    work = args.results / "setup_scaling"
+    work.mkdir(parents=True, exist_ok=True)
+    rows, started = [], time.time()
+    for dim, factors in (("2-D", args.factors_2d), ("3-D", args.factors_3d)):
+        for f in factors:
+            for np_ in args.processes:
+                for r in range(args.repeats):
+                    row = run_one(args, work, dim, f, np_, r, env)
+                    rows.append(row)
+                    print(f"[{time.time() - started:6.0f} s] {dim} factor {f:g}, {np_} process(es): "
+                          f"{row['status']}, {row['unknowns']} unknowns, whole run "
+                          f"{row['process_wall_s']} s, setup {row['setup_s']} s", flush=True)
+    with open(args.results / "setup_scaling.csv", "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    text = table(rows, args)
+    args.table.write_text(text)
+    print(text)
+
+
+if __name__ == "__main__":
+    main()
