@@ -165,6 +165,28 @@ def read_csv(path, units=True):
     return {n: data[:, i] for i, n in enumerate(names)}
 
 
+def parse_run_log(log, sections):
+    """From a run's screen output: seconds per TimerOutput section of
+    `sections`, "total" (the TimerOutput's wall time), "unknowns" (of the
+    first mesh), "steps" and "newton" (from the final line)."""
+    result = {}
+    for line in log.splitlines():
+        cells = [c.strip() for c in line.split("|")]
+        if len(cells) >= 4 and cells[1] in sections:
+            result[cells[1]] = float(cells[3].rstrip("s"))
+        m = re.search(r"Total wallclock time elapsed since start\s*\|\s*([0-9.e+-]+)s", line)
+        if m:
+            result["total"] = float(m.group(1))
+        m = re.search(r"(\d+) unknowns", line)
+        if m and "unknowns" not in result:
+            result["unknowns"] = int(m.group(1))
+        m = re.search(r"after (\d+) steps \((\d+) Newton iterations", line)
+        if m:
+            result["steps"] = int(m.group(1))
+            result["newton"] = int(m.group(2))
+    return result
+
+
 def self_test():
     """Checks of the parameter-file override on a small file."""
     import tempfile

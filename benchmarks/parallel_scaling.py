@@ -66,19 +66,7 @@ def write_prm(path, scene, solver, directory):
 
 def parse(log):
     """Seconds per timer section, total, steps, Newton iterations."""
-    result = {}
-    for line in log.splitlines():
-        cells = [c.strip() for c in line.split("|")]
-        if len(cells) >= 4 and cells[1] in SECTIONS:
-            result[cells[1]] = float(cells[3].rstrip("s"))
-        m = re.search(r"Total wallclock time elapsed since start\s*\|\s*([0-9.e+-]+)s", line)
-        if m:
-            result["total"] = float(m.group(1))
-        m = re.search(r"after (\d+) steps \((\d+) Newton iterations", line)
-        if m:
-            result["steps"] = int(m.group(1))
-            result["newton"] = int(m.group(2))
-    return result
+    return bench_common.parse_run_log(log, SECTIONS)
 
 
 def main():

@@ -38,22 +38,8 @@ SECTIONS = ["setup", "initial conditions", "Newton solve"]
 
 
 def parse(log):
-    """Seconds per timer section, TimerOutput total, unknowns, steps."""
-    result = {}
-    for line in log.splitlines():
-        cells = [c.strip() for c in line.split("|")]
-        if len(cells) >= 4 and cells[1] in SECTIONS:
-            result[cells[1]] = float(cells[3].rstrip("s"))
-        m = re.search(r"Total wallclock time elapsed since start\s*\|\s*([0-9.e+-]+)s", line)
-        if m:
-            result["total"] = float(m.group(1))
-        m = re.search(r"(\d+) unknowns", line)
-        if m and "unknowns" not in result:
-            result["unknowns"] = int(m.group(1))
-        m = re.search(r"after (\d+) steps", line)
-        if m:
-            result["steps"] = int(m.group(1))
-    return result
+    """Seconds per timer section, total, steps, Newton iterations."""
+    return bench_common.parse_run_log(log, SECTIONS)
 
 
 def run_one(args, work, dim, factor, np_, repeat, env):
