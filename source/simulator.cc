@@ -691,12 +691,17 @@ namespace ContactDynamics
         return;
       }
     if (!controller.cut(dt_try))
-      stop_run("The time step would have to be cut to " +
-               format_number(controller.planned_dt()) +
-               " at t = " + format_number(time) +
-               ", below Time integration/Minimum time step = " +
-               format_number(integrator.minimum_time_step()) +
-               " (the last attempt: " + last_failure + ").");
+      {
+        // what the set-up warned about may be the cause
+        const std::string caveats = contact ? contact->caveats() : "";
+        stop_run("The time step would have to be cut to " +
+                 format_number(controller.planned_dt()) +
+                 " at t = " + format_number(time) +
+                 ", below Time integration/Minimum time step = " +
+                 format_number(integrator.minimum_time_step()) +
+                 " (the last attempt: " + last_failure + ")." +
+                 (caveats.empty() ? "" : " A likely cause: " + caveats));
+      }
     pcout << "  cutting the time step to " << controller.planned_dt()
           << std::endl;
   }

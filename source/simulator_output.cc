@@ -205,12 +205,22 @@ namespace ContactDynamics
     const std::string warning = watchdog.warning(created, step);
     // (the same on every process: one message)
     AssertThrow(warning.empty() || !watchdog.stops(),
-                ExcCollective(warning + " The run stops (Energy watchdog/Action "
-                                     "= stop) at step " +
-                           std::to_string(step) +
-                           "; what was written before is complete."));
+                ExcCollective(warning +
+                              " The run stops (Energy watchdog/Action "
+                              "= stop) at step " +
+                              std::to_string(step) +
+                              "; what was written before is complete."));
     if (!warning.empty())
       pcout << "Warning: " << warning << std::endl;
+    if (!small_strain_warned)
+      {
+        const std::string strain =
+          mechanics->small_strain_excess(ghosted(u, scratch_ghost[0]));
+        small_strain_warned = !strain.empty();
+        if (small_strain_warned)
+          pcout << "Warning (step " << step << ", t = " << time
+                << "; said once per run): " << strain << std::endl;
+      }
   }
 
   template <int dim>

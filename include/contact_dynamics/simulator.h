@@ -328,6 +328,7 @@ namespace ContactDynamics
     NewtonSolver         newton;
     OutputParameters     output_parameters;
     EnergyWatchdog       watchdog;
+    bool                 small_strain_warned = false;
     RefinementParameters refinement;
     unsigned int         base_level = 0; // of the initial mesh
     AdaptationSchedule   adaptation;
@@ -384,7 +385,7 @@ namespace ContactDynamics
     unsigned int linear_iterations = 0; // GMRES, last step
     bool         structure_changed = true;
     int          last_vtu_step     = -1;
-    std::string  last_failure; // why the last failed step failed
+    std::string  last_failure;          // why the last failed step failed
     unsigned int failures_in_a_row = 0; // since the last committed step
     std::string  linear_solver_name;
 

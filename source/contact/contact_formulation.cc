@@ -374,20 +374,18 @@ namespace ContactDynamics
                            formulation_names.name(formulation) +
                            " needs at least one pair in 'Contact/Pairs'."));
     // (ignored, the bodies would pass through each other and the obstacles)
-    AssertThrow(formulation != Formulation::none ||
-                  (pairs.empty() && obstacles.empty()),
-                ExcMessage(
-                  "Contact/Formulation = none enforces no contact, but " +
-                  (pairs.empty() ? "" :
-                                   "'Contact/Pairs' = '" + prm.get("Pairs") +
-                                     "'" + (obstacles.empty() ? "" : " and ")) +
-                  (obstacles.empty() ?
-                     "" :
-                     "'Contact/Rigid obstacles' = '" +
-                       prm.get("Rigid obstacles") + "'") +
-                  (!pairs.empty() && !obstacles.empty() ? " are" : " is") +
-                  " set: choose Formulation = mortar or nts, or remove " +
-                  (!pairs.empty() && !obstacles.empty() ? "them." : "it.")));
+    AssertThrow(
+      formulation != Formulation::none || (pairs.empty() && obstacles.empty()),
+      ExcMessage("Contact/Formulation = none enforces no contact, but " +
+                 (pairs.empty() ? "" :
+                                  "'Contact/Pairs' = '" + prm.get("Pairs") +
+                                    "'" + (obstacles.empty() ? "" : " and ")) +
+                 (obstacles.empty() ? "" :
+                                      "'Contact/Rigid obstacles' = '" +
+                                        prm.get("Rigid obstacles") + "'") +
+                 (!pairs.empty() && !obstacles.empty() ? " are" : " is") +
+                 " set: choose Formulation = mortar or nts, or remove " +
+                 (!pairs.empty() && !obstacles.empty() ? "them." : "it.")));
 
     allow_initial_penetration =
       penetration_names.value(prm.get("Initial penetration"));
@@ -478,6 +476,12 @@ namespace ContactDynamics
     nts.parse_parameters(prm);
     prm.leave_subsection();
     prm.leave_subsection();
+    for (const std::string &body : layout.body_names)
+      {
+        prm.enter_subsection("Body " + body);
+        contact.youngs_moduli.push_back(prm.get_double("Young's modulus"));
+        prm.leave_subsection();
+      }
 
     for (const auto &point : contact.monitored_points)
       AssertThrow(point.size() == dim,

@@ -517,6 +517,9 @@ namespace ContactDynamics
       }
     if (worst > complementarity.capture_tolerance)
       report_initial_overlap(worst, pair, node, log);
+    const std::string found = caveats();
+    if (!found.empty())
+      log << "Warning: " << found << std::endl;
     for (unsigned int p = 0; p < pairs.size(); ++p)
       if (pairs[p].obstacle)
         check_obstacle_side(pairs[p], contact.pairs[p].name, u);

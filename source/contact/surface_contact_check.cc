@@ -6,6 +6,7 @@
 
 #include <contact_dynamics/contact/coordinates.h>
 #include <contact_dynamics/contact/face_passage.h>
+#include <contact_dynamics/contact/setup_caveats.h>
 #include <contact_dynamics/contact/surface_contact.h>
 
 #include <algorithm>
@@ -155,7 +156,30 @@ namespace ContactDynamics
     return failure.str();
   }
 
+  template <int dim>
+  std::string
+  SurfaceContact<dim>::caveats() const
+  {
+    using Formulation = ContactParameters::Formulation;
+    std::vector<const ContactSurface<dim> *> secondary;
+    for (const PairData &pair : pairs)
+      secondary.push_back(&pair.secondary);
+    const bool  mortar = contact.formulation == Formulation::mortar;
+    std::string found =
+      complementarity_scale_caveat(contact,
+                                   secondary,
+                                   complementarity.c_n,
+                                   mortar && !complementarity.normalize_c_n,
+                                   std::string("Contact/") +
+                                     (mortar ? "Mortar" : "Node to segment") +
+                                     "/c_n");
+    const std::string corner =
+      mortar ? secondary_corner_caveat(contact, secondary) : "";
+    return found + (found.empty() || corner.empty() ? "" : " ") + corner;
+  }
+
 #define INSTANTIATE(dim)                                                   \
+  template std::string SurfaceContact<dim>::caveats() const;               \
   template std::string SurfaceContact<dim>::check_step(const VectorType &) \
     const;                                                                 \
   template std::vector<std::set<unsigned int>>                             \

@@ -1,13 +1,16 @@
 // SolidMechanics: the quantities of a given state (inertia forces, the
-// initial acceleration system, energies, inverted corners).
+// initial acceleration system, energies, inverted corners, strains beyond
+// the small-strain range).
 #include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/fe/fe_values.h>
 
+#include <contact_dynamics/contact/coordinates.h>
 #include <contact_dynamics/mechanics/solid_mechanics.h>
 
 #include <limits>
 #include <sstream>
+#include <utility>
 
 namespace ContactDynamics
 {
@@ -132,6 +135,58 @@ namespace ContactDynamics
     message << "Inverted element: det F = " << smallest
             << " <= 0 at the corner (reference position " << where
             << ") of a neo-Hookean element";
+    return message.str();
+  }
+
+  template <int dim>
+  std::string
+  SolidMechanics<dim>::small_strain_excess(const VectorType &u_ghost) const
+  {
+    // ((strain norm / limit, strain norm), (body, place)) of the worst
+    std::pair<std::pair<double, double>, std::pair<unsigned int, Point<dim>>>
+      worst{{0, 0}, {0, Point<dim>()}};
+    if (has_linear_cells)
+      {
+        const FEValuesExtractors::Vector     displacement(0);
+        FEValues<dim>                        fe_values(dof_handler.get_fe(),
+                                QMidpoint<dim>(),
+                                update_gradients | update_quadrature_points);
+        std::vector<SymmetricTensor<2, dim>> strain(1);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            const unsigned int body  = cell->material_id();
+            const double       limit = bodies[body].material.small_strain_limit;
+            if (!cell->is_locally_owned() || !materials[body]->is_linear() ||
+                limit == 0)
+              continue;
+            fe_values.reinit(cell);
+            fe_values[displacement].get_function_symmetric_gradients(u_ghost,
+                                                                     strain);
+            const double norm = strain[0].norm();
+            if (norm / limit > worst.first.first)
+              worst = {{norm / limit, norm},
+                       {body, fe_values.quadrature_point(0)}};
+          }
+      }
+    for (const auto &w :
+         Utilities::MPI::all_gather(u_ghost.get_mpi_communicator(), worst))
+      if (w.first.first > worst.first.first)
+        worst = w;
+    const auto [ratio, norm] = worst.first;
+    const auto [body, where] = worst.second;
+    if (!(ratio > 1))
+      return "";
+    std::ostringstream message;
+    message << "The linear elastic body '" << bodies[body].name
+            << "' reaches a strain norm of " << norm << " near "
+            << coordinates(where) << ", above its Small strain limit "
+            << bodies[body].material.small_strain_limit
+            << ": linear elasticity does not hold at such strains or "
+               "rotations, so the stresses and the energies are not the "
+               "physics'. Use 'Body "
+            << bodies[body].name
+            << "/Material model = neo-Hookean' (or raise the limit if small "
+               "strains are not what you model).";
     return message.str();
   }
 

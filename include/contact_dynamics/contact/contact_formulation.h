@@ -259,6 +259,16 @@ namespace ContactDynamics
       (void)log;
     }
 
+    /**
+     * Findings of the set-up that do not stop the run but may explain a
+     * later failure (setup_caveats.h), or "". The same on every process.
+     */
+    virtual std::string
+    caveats() const
+    {
+      return "";
+    }
+
     /** Secondary nodes whose conditions this process assembles. */
     virtual unsigned int
     n_owned_contact_nodes() const

@@ -42,6 +42,8 @@ namespace ContactDynamics
     std::vector<std::vector<double>> monitored_points;
     bool                             allow_initial_penetration = false;
     std::vector<std::string>         body_names; // of the scene, for messages
+    // per body of body_names (set by create_contact_formulation)
+    std::vector<double>                  youngs_moduli;
     std::vector<RigidObstacleParameters> obstacles;
 
     static void

@@ -162,6 +162,8 @@ namespace ContactDynamics
 
     void
     check_initial_state(const VectorType &u, std::ostream &log) const override;
+    std::string
+    caveats() const override;
     void
     report_initial_overlap(double             worst,
                            unsigned int       pair,
@@ -198,8 +200,7 @@ namespace ContactDynamics
     using PairData    = ContactPairData<dim>;
     using PatchForces = ContactDynamics::PatchForces;
 
-    // the patch interface (ContactPatches), named here since it is a
-    // dependent base
+    // the patch interface (ContactPatches: a dependent base)
     using ContactPatches<dim>::minimum_coverage;
     using ContactPatches<dim>::traction_per_multiplier;
     using ContactPatches<dim>::force_per_gap_sum;
@@ -239,7 +240,6 @@ namespace ContactDynamics
      */
     std::vector<std::vector<unsigned int>>
     saved_node_map(const CheckpointData &data) const;
-
 
   private:
     using LinearSystem = ContactLinearSystem;

@@ -33,6 +33,9 @@ namespace ContactDynamics
     double density                        = 1.;
     double rayleigh_mass_coefficient      = 0.;
     double rayleigh_stiffness_coefficient = 0.;
+    // linear elastic bodies: the strain norm above which a warning says the
+    // model no longer applies (0: no check)
+    double small_strain_limit = 0.2;
 
     static void
     declare_parameters(ParameterHandler &prm);

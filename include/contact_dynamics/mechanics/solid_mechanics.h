@@ -150,6 +150,14 @@ namespace ContactDynamics
     std::string
     inverted_corner(const VectorType &u_ghost) const;
 
+    /**
+     * The linear elastic body whose largest strain norm (cell centres of
+     * the state `u_ghost`, ghosted) exceeds its Small strain limit the
+     * most: what, how much and where, or "" (the same on every process).
+     */
+    std::string
+    small_strain_excess(const VectorType &u_ghost) const;
+
   private:
     using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
 
