@@ -167,13 +167,14 @@ def read_csv(path, units=True):
 
 def parse_run_log(log, sections):
     """From a run's screen output: seconds per TimerOutput section of
-    `sections`, "total" (the TimerOutput's wall time), "unknowns" (of the
+    `sections` (and its number of calls, "<section> calls"), "total" (the TimerOutput's wall time), "unknowns" (of the
     first mesh), "steps" and "newton" (from the final line)."""
     result = {}
     for line in log.splitlines():
         cells = [c.strip() for c in line.split("|")]
         if len(cells) >= 4 and cells[1] in sections:
             result[cells[1]] = float(cells[3].rstrip("s"))
+            result[cells[1] + " calls"] = int(cells[2])
         m = re.search(r"Total wallclock time elapsed since start\s*\|\s*([0-9.e+-]+)s", line)
         if m:
             result["total"] = float(m.group(1))

@@ -9,6 +9,11 @@ time (process start to exit) into the TimerOutput's `setup` (mesh, dofs,
 sparsity with the condensation's fill-in, contact surfaces), `initial
 conditions` (initial acceleration, contact check) and `Newton solve`, and
 the rest (library loading, mesh creation, parameter reading, output).
+The run writes a checkpoint after its third step (TimerOutput `checkpoint`),
+a second process reads it back (`--restart`: the whole restart run, which
+has no step left) and a third run of the same scene adapts the mesh to the
+contact (one level; TimerOutput `mesh adaptation` per mesh change: marking,
+refinement, the transfer of every field and the new setup).
 
   python3 benchmarks/setup_scaling.py [--processes 1 2] [--repeats 1]
       [--factors-2d 1 2 3 4] [--factors-3d 1 1.5 2]
@@ -34,7 +39,8 @@ import bench_common  # noqa: E402
 REPO = Path(__file__).resolve().parent.parent
 SCENES = {"2-D": ("prm/ironing/mortar.prm", 0.03),
           "3-D": ("prm/ironing/mortar_3d.prm", None)}
-SECTIONS = ["setup", "initial conditions", "Newton solve"]
+SECTIONS = ["setup", "initial conditions", "Newton solve", "checkpoint",
+            "mesh adaptation"]
 
 
 def parse(log):
@@ -55,19 +61,45 @@ def run_one(args, work, dim, factor, np_, repeat, env):
     base = bench_common.prm_values(REPO / source, {})
     dt = float(base.get("Time integration/Time step", 0.01))
     changes["Time integration/End time"] = end_time if end_time else 3 * dt
+    changes["Output/Checkpoint interval"] = 3
     bench_common.write_prm(prm, REPO / source, changes)
-    cmd = ["mpirun", "-np", str(np_), str(args.exe), str(prm)]
-    t0 = time.time()
-    p = subprocess.run(cmd, cwd=work, env=env, capture_output=True, text=True)
-    wall = time.time() - t0
-    (work / f"{name}.log").write_text(p.stdout + p.stderr)
+
+    def timed(command, log_name):
+        t0 = time.time()
+        p = subprocess.run(["mpirun", "-np", str(np_), str(args.exe)] + command,
+                           cwd=work, env=env, capture_output=True, text=True)
+        (work / log_name).write_text(p.stdout + p.stderr)
+        return p, time.time() - t0
+
+    p, wall = timed([str(prm)], f"{name}.log")
     info = parse(p.stdout)
     row = dict(scene=dim, factor=factor, processes=np_, repeat=repeat,
                status="ok" if p.returncode == 0 else "failed",
                unknowns=info.get("unknowns", ""), steps=info.get("steps", ""),
                process_wall_s=round(wall, 3), timer_total_s=info.get("total", ""))
-    for s in SECTIONS:
+    for s in SECTIONS[:4]:
         row[s.replace(" ", "_") + "_s"] = info.get(s, 0.0)
+    # the checkpoint read back: a restart with no step left to run
+    p, wall = timed(["--restart", str(work / name)], f"{name}_restart.log")
+    row["restart_wall_s"] = round(wall, 3) if p.returncode == 0 else ""
+    # the same scene with a mesh that follows the contact
+    adaptive = work / f"{name}_adaptive.prm"
+    changes.pop("Output/Checkpoint interval")
+    changes.update({"Mesh refinement/Adapt to contact": "true",
+                    "Mesh refinement/Maximum levels": 1,
+                    "Output/Output directory": str(work / f"{name}_adaptive")})
+    bench_common.write_prm(adaptive, REPO / source, changes)
+    p, wall = timed([str(adaptive)], f"{name}_adaptive.log")
+    info = parse(p.stdout)
+    row["adaptive_status"] = "ok" if p.returncode == 0 else "failed"
+    # (the section also times the marking of steps that change nothing)
+    row["mesh_adaptation_s"] = info.get("mesh adaptation", 0.0)
+    row["mesh_adaptation_calls"] = row["adaptive_final_unknowns"] = ""
+    stats = work / f"{name}_adaptive" / "statistics.csv"
+    if stats.is_file():
+        last = list(csv.DictReader(open(stats)))[-1]
+        row["mesh_adaptation_calls"] = last.get("mesh_changes", "")
+        row["adaptive_final_unknowns"] = last.get("unknowns", "")
     return row
 
 
@@ -75,7 +107,7 @@ def table(rows, args):
     def median(dim, factor, np_, key):
         vals = [float(r[key]) for r in rows
                 if (r["scene"], r["factor"], r["processes"]) == (dim, factor, np_)
-                and r["status"] == "ok" and r[key] != ""]
+                and r["status"] == "ok" and r.get(key, "") != ""]
         return statistics.median(vals) if vals else float("nan")
 
     out = ["| scene | factor | unknowns | processes | whole run (s) | setup (s) | setup per unknown (us) | growth exponent of setup | initial conditions (s) | Newton solves, 3 steps (s) | rest (s) |",
@@ -96,6 +128,28 @@ def table(rows, args):
                 out.append(f"| {dim} | {f:g} | {n:,.0f} | {np_} | {wall:.3g} | {setup:.3g} | "
                            f"{1e6 * setup / n:.3g} | {growth} | {init:.3g} | {newton:.3g} | "
                            f"{wall - setup - init - newton:.3g} |")
+    out += ["", "Per checkpoint and per mesh change (the same scenes; the adaptive "
+            "runs refine one level near the contact, so their meshes are larger):", "",
+            "| scene | factor | unknowns | processes | checkpoint write (s) | write per unknown (us) | "
+            "restart, whole run (s) | mesh changes | mesh adaptation per change (s) | per change and unknown after it (us) | "
+            "growth exponent per change |",
+            "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for dim, factors in (("2-D", args.factors_2d), ("3-D", args.factors_3d)):
+        for np_ in args.processes:
+            previous = None
+            for f in factors:
+                n = median(dim, f, np_, "unknowns")
+                write = median(dim, f, np_, "checkpoint_s")
+                restart = median(dim, f, np_, "restart_wall_s")
+                calls = median(dim, f, np_, "mesh_adaptation_calls")
+                change = median(dim, f, np_, "mesh_adaptation_s") / calls if calls > 0 else float("nan")
+                n_after = median(dim, f, np_, "adaptive_final_unknowns")
+                growth = "-"
+                if previous and previous[1] > 0 and change > 0 and n_after > previous[0]:
+                    growth = f"{math.log(change / previous[1]) / math.log(n_after / previous[0]):.2f}"
+                previous = (n_after, change)
+                out.append(f"| {dim} | {f:g} | {n:,.0f} | {np_} | {write:.3g} | {1e6 * write / n:.3g} | "
+                           f"{restart:.3g} | {calls:.0f} | {change:.3g} | {1e6 * change / n_after:.3g} | {growth} |")
     load = os.getloadavg()
     return ("<!-- generated by benchmarks/setup_scaling.py; do not edit -->\n"
             f"Medians of {args.repeats} run(s) each, {os.cpu_count()} cores, load average at "
@@ -130,7 +184,9 @@ def main():
                     rows.append(row)
                     print(f"[{time.time() - started:6.0f} s] {dim} factor {f:g}, {np_} process(es): "
                           f"{row['status']}, {row['unknowns']} unknowns, whole run "
-                          f"{row['process_wall_s']} s, setup {row['setup_s']} s", flush=True)
+                          f"{row['process_wall_s']} s, setup {row['setup_s']} s, restart "
+                          f"{row['restart_wall_s']} s, {row['mesh_adaptation_calls']} mesh changes "
+                          f"{row['mesh_adaptation_s']} s", flush=True)
     with open(args.results / "setup_scaling.csv", "w", newline="") as fh:
         w = csv.DictWriter(fh, fieldnames=list(rows[0]))
         w.writeheader()

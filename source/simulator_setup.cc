@@ -214,7 +214,10 @@ namespace ContactDynamics
                                             rows);
         for (const auto &f : fill)
           for (const auto r : f.rows)
-            fill_pattern.add_entries(r, f.columns.begin(), f.columns.end());
+            fill_pattern.add_entries(r,
+                                     f.columns.begin(),
+                                     f.columns.end(),
+                                     true);
         SparsityTools::distribute_sparsity_pattern(fill_pattern,
                                                    locally_owned,
                                                    mpi_communicator,
