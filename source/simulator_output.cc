@@ -218,7 +218,7 @@ namespace ContactDynamics
           mechanics->small_strain_excess(ghosted(u, scratch_ghost[0]));
         small_strain_warned = !strain.empty();
         if (small_strain_warned)
-          pcout << "Warning (step " << step << ", t = " << time
+          pcout << "Warning (step " << step << ", t = " << format_number(time)
                 << "; said once per run): " << strain << std::endl;
       }
   }

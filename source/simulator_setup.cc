@@ -120,7 +120,7 @@ namespace ContactDynamics
 
   template <int dim>
   void
-  Simulator<dim>::setup_system(const bool first)
+  Simulator<dim>::setup_system(const bool first, const bool sparsity)
   {
     TimerOutput::Scope t(*timer, "setup");
     dof_handler.distribute_dofs(*fe);
@@ -179,7 +179,7 @@ namespace ContactDynamics
     });
     // after a mesh change: once the candidates of the transferred state are
     // known (reevaluate_committed_state())
-    if (first)
+    if (first && sparsity)
       setup_sparsity();
   }
 
@@ -400,14 +400,14 @@ namespace ContactDynamics
     mechanics->setup(increment_constraints);
   }
 
-#define INSTANTIATE(dim)                                        \
-  template Simulator<dim>::Simulator(ParameterHandler &prm,     \
-                                     std::ostream     &screen,  \
-                                     const MPI_Comm    comm);      \
-  template void Simulator<dim>::setup_system(const bool first); \
-  template void Simulator<dim>::setup_sparsity();               \
-  template void Simulator<dim>::create_mesh();                  \
-  template void Simulator<dim>::set_near_null_space();          \
+#define INSTANTIATE(dim)                                              \
+  template Simulator<dim>::Simulator(ParameterHandler &prm,           \
+                                     std::ostream     &screen,        \
+                                     const MPI_Comm    comm);            \
+  template void Simulator<dim>::setup_system(const bool, const bool); \
+  template void Simulator<dim>::setup_sparsity();                     \
+  template void Simulator<dim>::create_mesh();                        \
+  template void Simulator<dim>::set_near_null_space();                \
   template void Simulator<dim>::setup_constraints();
   INSTANTIATE(2)
   INSTANTIATE(3)

@@ -188,9 +188,9 @@ namespace ContactDynamics
     jacobian_is_constant() const override;
 
     /** `first`: at the start; else after a mesh change (keeps the contact
-     * history's totals and the output files). */
+     * history's totals, the output files); `sparsity`: false at a load. */
     void
-    setup_system(const bool first = true);
+    setup_system(const bool first = true, const bool sparsity = true);
     /** Marks the cells near the trial state's contact zone and
      * refine_and_transfer(). */
     bool

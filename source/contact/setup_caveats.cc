@@ -50,7 +50,9 @@ namespace ContactDynamics
       for (unsigned int f = 0; f < s->n_faces(); ++f)
         {
           const auto &x = s->faces[f];
-          size += s->reference[x[0]].distance(s->reference[x.back()]);
+          // (the diagonal in 3-D: the edge of a square face times sqrt 2)
+          size += s->reference[x[0]].distance(s->reference[x.back()]) /
+                  std::sqrt(dim - 1.);
           ++n_faces;
         }
     if (stiffest == contact.youngs_moduli.end() || n_faces == 0)
@@ -79,8 +81,8 @@ namespace ContactDynamics
     if (ratio > 1e4)
       return message.str() +
              ": above about 1e4 E/h the semi-smooth Newton method stalls "
-             "(3-D bouncing block: 12 step cuts at 3e5 E/h, none up to 3e3, "
-             "no progress at 3e7). The shipped examples use 1e-3 to 13 E/h.";
+             "(3-D bouncing block: 12 step cuts at 2e5 E/h, none up to 2e3, "
+             "no progress at 2e7). The shipped examples use 1e-3 to 13 E/h.";
     return "";
   }
 
@@ -90,11 +92,13 @@ namespace ContactDynamics
     const ContactParameters                        &contact,
     const std::vector<const ContactSurface<dim> *> &secondary_surfaces)
   {
-    // every face at every node, sorted by position: a node shared by two
-    // pairs' surfaces is one vertex, with the same coordinates
+    // every face at every node, sorted by node: a node of two pairs'
+    // surfaces has the same unknowns in both (nodes of two bodies at one
+    // place do not)
     struct FaceAtNode
     {
-      std::array<double, dim> key;
+      types::global_dof_index key; // the node's first unknown
+      Point<dim>              where;
       Tensor<1, dim>          normal;
       unsigned int            pair;
     };
@@ -107,7 +111,7 @@ namespace ContactDynamics
             {
               const Tensor<1, dim> n = reference_normal(s, f);
               for (const unsigned int j : s.faces[f])
-                faces.push_back({position_key(s.reference[j]), n, p});
+                faces.push_back({s.dofs[j][0], s.reference[j], n, p});
             }
         }
     std::sort(faces.begin(), faces.end(), [](const auto &a, const auto &b) {
@@ -116,7 +120,7 @@ namespace ContactDynamics
     double       sharpest = std::cos(M_PI / 3); // cos of the angle
     unsigned int n_nodes  = 0;
     std::array<unsigned int, 2> pairs{{0, 0}};
-    std::array<double, dim>     where{};
+    Point<dim>                  where;
     for (std::size_t begin = 0, end = 0; begin < faces.size(); begin = end)
       {
         end = begin;
@@ -132,16 +136,13 @@ namespace ContactDynamics
                 {
                   sharpest = c;
                   pairs    = {{faces[a].pair, faces[b].pair}};
-                  where    = faces[a].key;
+                  where    = faces[a].where;
                 }
             }
         n_nodes += corner;
       }
     if (n_nodes == 0)
       return "";
-    Point<dim> x;
-    for (unsigned int d = 0; d < dim; ++d)
-      x[d] = where[d];
     std::ostringstream message;
     const std::string &first = contact.pairs[pairs[0]].name;
     if (pairs[0] == pairs[1])
@@ -150,8 +151,9 @@ namespace ContactDynamics
     else
       message << "The secondary surfaces of the mortar pairs '" << first
               << "' and '" << contact.pairs[pairs[1]].name << "' meet at ";
-    message << format_number(std::round(std::acos(sharpest) * 180 / M_PI))
-            << " degrees at the node " << coordinates(x) << " (" << n_nodes
+    message << format_number(
+                 std::round(std::acos(std::max(sharpest, -1.)) * 180 / M_PI))
+            << " degrees at the node " << coordinates(where) << " (" << n_nodes
             << " node(s) with faces more than 60 degrees apart). Dual mortar "
                "gives such a node one multiplier along the mean of its "
                "faces' normals, which fits neither face: once the corner "

@@ -168,8 +168,11 @@ namespace ContactDynamics
                        {body, fe_values.quadrature_point(0)}};
           }
       }
-    for (const auto &w :
-         Utilities::MPI::all_gather(u_ghost.get_mpi_communicator(), worst))
+    // (ties: the lowest process's, the same on every process)
+    const auto all =
+      Utilities::MPI::all_gather(u_ghost.get_mpi_communicator(), worst);
+    worst = all[0];
+    for (const auto &w : all)
       if (w.first.first > worst.first.first)
         worst = w;
     const auto [ratio, norm] = worst.first;

@@ -3,9 +3,8 @@
 
 #include <contact_dynamics/output/checkpoint.h>
 
-#include <boost/crc.hpp>
-
 #include <algorithm>
+#include <boost/crc.hpp>
 #include <cerrno>
 #include <cstdint>
 #include <cstdlib>
@@ -75,19 +74,16 @@ namespace ContactDynamics
     bool
     holds_only_checkpoint_files(const fs::path &path)
     {
-      const std::set<std::string> names = {Checkpoints::data_file,
-                                           Checkpoints::parameter_file,
-                                           std::string(
-                                             Checkpoints::parameter_file) +
-                                             ".part",
-                                           Checkpoints::checksum_file,
-                                           std::string(
-                                             Checkpoints::checksum_file) +
-                                             ".part",
-                                           "mesh",
-                                           "mesh.info",
-                                           "mesh_fixed.data",
-                                           "mesh_variable.data"};
+      const std::set<std::string> names = {
+        Checkpoints::data_file,
+        Checkpoints::parameter_file,
+        std::string(Checkpoints::parameter_file) + ".part",
+        Checkpoints::checksum_file,
+        std::string(Checkpoints::checksum_file) + ".part",
+        "mesh",
+        "mesh.info",
+        "mesh_fixed.data",
+        "mesh_variable.data"};
       std::error_code error;
       if (!fs::is_directory(path, error))
         return false;
@@ -139,8 +135,8 @@ namespace ContactDynamics
     is_own(const fs::path &path)
     {
       std::error_code error;
-      return holds_only_checkpoint_files(path) &&
-             !fs::is_empty(path, error) && !error;
+      return holds_only_checkpoint_files(path) && !fs::is_empty(path, error) &&
+             !error;
     }
 
     void
@@ -163,9 +159,8 @@ namespace ContactDynamics
                            "parameters (or another version)."));
     AssertThrow(size == 0 || it->second.size() == size,
                 ExcMessage("The checkpoint '" + source + "' has " +
-                           std::to_string(it->second.size()) +
-                           " values of '" + name + "' where " +
-                           std::to_string(size) +
+                           std::to_string(it->second.size()) + " values of '" +
+                           name + "' where " + std::to_string(size) +
                            " are expected: it was written by a run with "
                            "other parameters."));
     return it->second;
@@ -232,8 +227,7 @@ namespace ContactDynamics
                     ExcMessage("The checkpoint file '" + filename +
                                "' is damaged (entry '" + name + "')."));
         std::vector<double> values(size);
-        in.read(reinterpret_cast<char *>(values.data()),
-                size * sizeof(double));
+        in.read(reinterpret_cast<char *>(values.data()), size * sizeof(double));
         numbers[name] = std::move(values);
       }
     const auto n_texts = take<std::uint64_t>(in);
@@ -262,12 +256,11 @@ namespace ContactDynamics
       // a directory of the user's under either name is left alone
       for (const std::string &name : {temporary, final})
         AssertThrow(!fs::exists(name) ||
-                      (name == temporary ?
-                         holds_only_checkpoint_files(name) :
-                         is_own(name)),
+                      (name == temporary ? holds_only_checkpoint_files(name) :
+                                           is_own(name)),
                     ExcMessage(
-                      "The checkpoint cannot be written to '" + final +
-                      "': '" + name +
+                      "The checkpoint cannot be written to '" + final + "': '" +
+                      name +
                       "' exists and holds files this program did not write "
                       "there. Move it away (nothing in it was changed)."));
       std::error_code error;
@@ -309,8 +302,8 @@ namespace ContactDynamics
         }
       // the names sort as the steps do
       std::vector<fs::path> complete;
-      for (const auto &entry : fs::directory_iterator(
-             fs::path(final).parent_path()))
+      for (const auto &entry :
+           fs::directory_iterator(fs::path(final).parent_path()))
         {
           if (!is_step_name(entry.path()))
             continue;
@@ -386,9 +379,9 @@ namespace ContactDynamics
                           "another checkpoint (the one before it is kept "
                           "next to it).");
       };
-      std::string            line;
+      std::string           line;
       std::set<std::string> listed;
-      bool                   counted = false;
+      bool                  counted = false;
       while (std::getline(in, line))
         {
           AssertThrow(!counted,
@@ -410,9 +403,10 @@ namespace ContactDynamics
           AssertThrow((fields >> size >> sum) && std::getline(fields, name) &&
                         name.size() > 1 && name[0] == ' ' &&
                         name.find('/') == std::string::npos,
-                      damaged(checksum_file, "has a line that is not 'size "
-                                             "checksum name': '" +
-                                               line.substr(0, 80) + "'"));
+                      damaged(checksum_file,
+                              "has a line that is not 'size "
+                              "checksum name': '" +
+                                line.substr(0, 80) + "'"));
           name = name.substr(1);
           listed.insert(name);
           if (!only.empty() && name != only)
@@ -505,13 +499,20 @@ namespace ContactDynamics
       std::vector<std::string> changed;
       for (const auto &name : names)
         {
+          // "A/": every entry of A; "/b": the entry b of any subsection
           if (std::any_of(allowed.begin(), allowed.end(), [&](const auto &a) {
-                return name.rfind(a, 0) == 0;
+                return a.front() == '/' ?
+                         name.size() >= a.size() &&
+                           name.compare(name.size() - a.size(), a.size(), a) ==
+                             0 :
+                         name.rfind(a, 0) == 0;
               }))
             continue;
           const auto o = old_values.find(name), n = new_values.find(name);
-          const std::string before = o == old_values.end() ? "(none)" : o->second;
-          const std::string after = n == new_values.end() ? "(none)" : n->second;
+          const std::string before =
+            o == old_values.end() ? "(none)" : o->second;
+          const std::string after =
+            n == new_values.end() ? "(none)" : n->second;
           if (before != after)
             changed.push_back(name + ": " + before + " -> " + after);
         }

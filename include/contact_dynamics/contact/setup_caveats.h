@@ -16,7 +16,8 @@ namespace ContactDynamics
 
   /**
    * c_n against the stiffness of the scene, E_max / h (the largest Young's
-   * modulus of the bodies over the mean size of the secondary faces; the
+   * modulus of the scene's bodies over the mean edge of the secondary
+   * faces; the
    * weighted gap of unnormalized mortar carries a face measure h^(dim-1)
    * more). Above 1e10 E/h it throws, naming `parameter`: round-off of
    * c_n g then outweighs every contact pressure. Above 1e4 E/h it returns
