@@ -126,50 +126,45 @@ def table(rows, args):
                 and r["status"] == "ok" and r.get(key, "") != ""]
         return statistics.median(vals) if vals else float("nan")
 
+    def exponent(previous, n, value):
+        """Growth exponent of `value` from the previous size: 1 linear."""
+        if previous and previous[1] > 0 and value > 0 and n > previous[0]:
+            return f"{math.log(value / previous[1]) / math.log(n / previous[0]):.2f}"
+        return "-"
+
     out = ["| scene | factor | unknowns | processes | whole run (s) | setup (s) | setup per unknown (us) | growth exponent of setup | initial conditions (s) | Newton solves, 3 steps (s) | rest (s) |",
            "|---|---|---|---|---|---|---|---|---|---|---|"]
+    second = ["", "Per checkpoint and per mesh change (the same scenes; a checkpoint write "
+              "includes the reload that makes the run continue as a restart would; the "
+              "adaptive runs refine one level near the contact, so their meshes are larger; "
+              "the 3-D tool touches nothing in three steps, so its mesh does not change):", "",
+              "| scene | factor | unknowns | processes | checkpoint write (s) | write per unknown (us) | "
+              "restart: whole run less its one step (s) | mesh changes | mesh adaptation per change (s) | per change and unknown after it (us) | "
+              "growth exponent per change |",
+              "|---|---|---|---|---|---|---|---|---|---|---|"]
     for dim, factors in (("2-D", args.factors_2d), ("3-D", args.factors_3d)):
         for np_ in args.processes:
-            previous = None
+            previous = previous_change = None
             for f in factors:
-                n = median(dim, f, np_, "unknowns")
-                wall = median(dim, f, np_, "process_wall_s")
-                setup = median(dim, f, np_, "setup_s")
-                init = median(dim, f, np_, "initial_conditions_s")
-                newton = median(dim, f, np_, "Newton_solve_s")
-                growth = "-"
-                if previous and previous[1] > 0 and setup > 0 and n > previous[0]:
-                    growth = f"{math.log(setup / previous[1]) / math.log(n / previous[0]):.2f}"
-                previous = (n, setup)
+                def m(key):
+                    return median(dim, f, np_, key)
+                n, setup = m("unknowns"), m("setup_s")
+                wall, init, newton = m("process_wall_s"), m("initial_conditions_s"), m("Newton_solve_s")
                 out.append(f"| {dim} | {f:g} | {n:,.0f} | {np_} | {wall:.3g} | {setup:.3g} | "
-                           f"{1e6 * setup / n:.3g} | {growth} | {init:.3g} | {newton:.3g} | "
-                           f"{wall - setup - init - newton:.3g} |")
-    out += ["", "Per checkpoint and per mesh change (the same scenes; a checkpoint write "
-            "includes the reload that makes the run continue as a restart would; the "
-            "adaptive runs refine one level near the contact, so their meshes are larger; "
-            "the 3-D tool touches nothing in three steps, so its mesh does not change):", "",
-            "| scene | factor | unknowns | processes | checkpoint write (s) | write per unknown (us) | "
-            "restart: whole run less its one step (s) | mesh changes | mesh adaptation per change (s) | per change and unknown after it (us) | "
-            "growth exponent per change |",
-            "|---|---|---|---|---|---|---|---|---|---|---|"]
-    for dim, factors in (("2-D", args.factors_2d), ("3-D", args.factors_3d)):
-        for np_ in args.processes:
-            previous = None
-            for f in factors:
-                n = median(dim, f, np_, "unknowns")
-                write = median(dim, f, np_, "checkpoint_s")
-                restart = median(dim, f, np_, "restart_wall_s")
-                calls = median(dim, f, np_, "mesh_adaptation_calls")
-                change = median(dim, f, np_, "mesh_adaptation_s") / calls if calls > 0 else float("nan")
-                n_after = median(dim, f, np_, "adaptive_final_unknowns")
-                growth = "-"
-                if previous and previous[1] > 0 and change > 0 and n_after > previous[0]:
-                    growth = f"{math.log(change / previous[1]) / math.log(n_after / previous[0]):.2f}"
-                previous = (n_after, change)
-                per_change = (f"{change:.3g} | {1e6 * change / n_after:.3g} | {growth}"
-                              if calls > 0 else "- | - | -")
-                out.append(f"| {dim} | {f:g} | {n:,.0f} | {np_} | {write:.3g} | {1e6 * write / n:.3g} | "
-                           f"{restart:.3g} | {calls:.0f} | {per_change} |")
+                           f"{1e6 * setup / n:.3g} | {exponent(previous, n, setup)} | {init:.3g} | "
+                           f"{newton:.3g} | {wall - setup - init - newton:.3g} |")
+                previous = (n, setup)
+                write, calls = m("checkpoint_s"), m("mesh_adaptation_calls")
+                per_change = "- | - | -"
+                if calls > 0:
+                    change, n_after = m("mesh_adaptation_s") / calls, m("adaptive_final_unknowns")
+                    per_change = (f"{change:.3g} | {1e6 * change / n_after:.3g} | "
+                                  f"{exponent(previous_change, n_after, change)}")
+                    previous_change = (n_after, change)
+                second.append(f"| {dim} | {f:g} | {n:,.0f} | {np_} | {write:.3g} | "
+                              f"{1e6 * write / n:.3g} | {m('restart_wall_s'):.3g} | {calls:.0f} | "
+                              f"{per_change} |")
+    out += second
     load = os.getloadavg()
     return ("<!-- generated by benchmarks/setup_scaling.py; do not edit -->\n"
             f"Medians of {args.repeats} run(s) each, {os.cpu_count()} cores, load average at "
