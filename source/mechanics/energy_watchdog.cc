@@ -16,8 +16,7 @@ namespace ContactDynamics
       "Fraction",
       default_text(defaults.limit),
       Patterns::Double(0, 1e6),
-      "A committed step whose energy balance error (with the energy a "
-      "mesh change creates counted in: transfer_energy) grows by more than "
+      "A committed step whose energy balance error grows by more than "
       "this fraction of the run's energy scale (the largest of kinetic "
       "plus elastic energy, external and obstacle work, initial and "
       "dissipated energy) created that energy from nothing: a warning on "
@@ -44,29 +43,17 @@ namespace ContactDynamics
     stop  = prm.get("Action") == "stop";
   }
 
-  namespace
-  {
-    // the balance error with the energy the mesh transfers changed counted
-    // as created: interpolation to a new mesh is not work done on the
-    // bodies
-    double
-    unexplained(const EnergyBalance &balance)
-    {
-      return balance.error() + balance.transfer;
-    }
-  } // namespace
-
   void
   EnergyWatchdog::reset(const EnergyBalance &balance)
   {
-    last_error = unexplained(balance);
+    last_error = balance.error();
   }
 
   double
   EnergyWatchdog::created_fraction(const EnergyBalance &balance)
   {
-    const double created = unexplained(balance) - last_error;
-    last_error           = unexplained(balance);
+    const double created = balance.error() - last_error;
+    last_error           = balance.error();
     const double scale =
       std::max({balance.kinetic + balance.elastic,
                 std::abs(balance.external),
@@ -86,9 +73,8 @@ namespace ContactDynamics
            " % of the run's energy scale (Energy watchdog/Fraction = " +
            format_number(limit) +
            "); typical causes: an impact or an obstacle start faster than the time "
-           "step resolves, contact without stabilization, or a mesh change "
-           "(the statistics column transfer_energy). A smaller Time "
+           "step resolves, or contact without stabilization. A smaller Time "
            "step, or Stabilization = velocity update (it returns the step's "
-           "contact work), removes the first two (doc/extreme-cases.md).";
+           "contact work), removes it (doc/extreme-cases.md).";
   }
 } // namespace ContactDynamics

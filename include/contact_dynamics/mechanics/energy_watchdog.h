@@ -1,8 +1,7 @@
 // A check of every committed step against energy created from nothing: the
 // growth of the energy balance error in the step (what contact, an
 // impulsive obstacle or an under-resolved impact create; a dissipative step
-// lowers it), and the energy a mesh transfer created, as a fraction of the
-// energy scale of the run.
+// lowers it) as a fraction of the energy scale of the run.
 #ifndef contact_dynamics_mechanics_energy_watchdog_h
 #define contact_dynamics_mechanics_energy_watchdog_h
 
@@ -55,8 +54,8 @@ namespace ContactDynamics
     }
 
   private:
-    double limit      = 0.1;
-    bool   stop       = false;
+    double limit = 0.1;
+    bool   stop  = false;
     double last_error = 0;
   };
 } // namespace ContactDynamics
