@@ -465,6 +465,7 @@ namespace ContactDynamics
       {
         if (root)
           std::cerr << "\n" << exception_message(e) << std::endl;
+        MPI_Barrier(MPI_COMM_WORLD);
         return 128 + e.signal;
       }
     catch (const ExcCollective &e)
@@ -472,6 +473,9 @@ namespace ContactDynamics
         // raised on every process: printed once
         if (root)
           std::cerr << "\nError: " << exception_message(e) << std::endl;
+        // mpirun kills the other processes as soon as one exits with an
+        // error: none leaves before the message is out
+        MPI_Barrier(MPI_COMM_WORLD);
         return 1;
       }
     catch (const std::exception &e)
