@@ -362,13 +362,38 @@ namespace ContactDynamics
       }
   }
 
+  unsigned int
+  FaceMemory::tangent_axis(const unsigned int           pair,
+                           const unsigned int           j,
+                           const unsigned int           n_nodes,
+                           const std::array<double, 3> &normal)
+  {
+    auto &axes = trial_axis[pair];
+    axes.resize(n_nodes, numbers::invalid_unsigned_int);
+    unsigned int &axis = axes[j];
+    // (a new axis starts at least 54.7 degrees from the normal;
+    // tangent_basis() refuses one within about 17 degrees)
+    if (axis < 3 && std::abs(normal[axis]) <= 0.8)
+      return axis;
+    axis = 0;
+    for (unsigned int d = 1; d < 3; ++d)
+      if (std::abs(normal[d]) < std::abs(normal[axis]))
+        axis = d;
+    return axis;
+  }
+
   void
   FaceMemory::save(CheckpointData &data, const ContactHistoryContext &) const
   {
-    std::vector<std::vector<unsigned int>> faces(n_pairs());
-    for (const auto &[p, nodes] : committed)
-      faces[p] = nodes;
-    save_per_process(comm, data, "contact/faces", faces);
+    for (const auto &[name, memory] :
+         {std::make_pair("contact/faces", &committed),
+          std::make_pair("contact/tangent axes", &committed_axis)})
+      {
+        std::vector<std::vector<unsigned int>> lists(n_pairs());
+        for (const auto &[p, nodes] : *memory)
+          lists[p] = nodes;
+        save_per_process(comm, data, name, lists);
+      }
   }
 
   void
@@ -376,14 +401,21 @@ namespace ContactDynamics
                    const ContactHistoryContext &context)
   {
     committed.clear();
-    // on another numbering the faces are searched anew
-    if (context.same_numbering())
-      {
-        const auto faces = load_per_process(comm, data, "contact/faces");
-        for (unsigned int p = 0; p < faces.size(); ++p)
-          if (!faces[p].empty())
-            committed[p] = faces[p];
-      }
+    committed_axis.clear();
+    // on another numbering the faces are searched anew and the axes chosen
+    // anew (checkpoints from before the axes were kept have none)
+    if (!context.same_numbering())
+      return;
+    for (const auto &[name, memory] :
+         {std::make_pair("contact/faces", &committed),
+          std::make_pair("contact/tangent axes", &committed_axis)})
+      if (data.has(std::string(name) + "/process 0"))
+        {
+          const auto lists = load_per_process(comm, data, name);
+          for (unsigned int p = 0; p < lists.size(); ++p)
+            if (!lists[p].empty())
+              (*memory)[p] = lists[p];
+        }
   }
 
   template class NodeToSegmentContact<2>;

@@ -177,24 +177,6 @@ namespace ContactDynamics
       return Number((distance - to_end) / distance);
     }
 
-    // The coordinate axis least aligned with a primary face's normal in the
-    // reference configuration, for the tangents of the contact normal
-    // there (the NTS normal is the primary one; as tangent_axis() for
-    // mortar's secondary normals)
-    unsigned int
-    face_tangent_axis(const Surface &p, const unsigned int face)
-    {
-      std::array<Vec3<double>, 4> y;
-      for (unsigned int a = 0; a < 4; ++a)
-        y[a] = to_vec(p.reference[p.faces[face][a]]);
-      const Vec3<double> n    = face_normal(y, 0.5, 0.5);
-      unsigned int       axis = 0;
-      for (unsigned int d = 1; d < 3; ++d)
-        if (std::abs(n[d]) < std::abs(n[axis]))
-          axis = d;
-      return axis;
-    }
-
     // The closest point's parameters with, exact, their derivatives: those
     // of the closest point of the surface or of an edge (none at a corner)
     template <typename AD>
@@ -388,7 +370,14 @@ namespace ContactDynamics
       const bool              friction    = pair.friction_coefficient > 0;
       std::array<Vec3<AD>, 2> tangent;
       if (friction)
-        tangent = tangent_basis(n_secondary, face_tangent_axis(p, face));
+        {
+          std::array<double, 3> n;
+          for (unsigned int d = 0; d < 3; ++d)
+            n[d] = value_of(n_secondary[d]);
+          tangent = tangent_basis(
+            n_secondary,
+            face_memory.tangent_axis(pair.index, j, s.n_nodes(), n));
+        }
       if ((this->complementarity.holds_contact() && state.dynamic) || friction)
         {
           Vec3<AD> v_rel = v;

@@ -1,5 +1,6 @@
 // SurfaceContact: the complementarity conditions of the secondary nodes
-// (normal contact with its stabilizations, friction) and the assembly of the
+// (normal contact with its stabilizations; friction in
+// surface_contact_friction.cc) and the assembly of the
 // patches' forces and the nodal sums they depend on.
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
@@ -26,32 +27,6 @@ namespace ContactDynamics
       {Stabilization::none, "none"}};
     const Selection<bool> jacobian_names{{true, "exact"},
                                          {false, "approximate"}};
-
-    // Adds the derivatives of -mu xi e_a through the slip direction
-    // e = s / |s|, d e / d s = (I - e e^T) / |s|, to the slip row of
-    // tangent a (in 2-D e is a sign: none).
-    template <unsigned int n_t>
-    void
-    add_direction_derivatives(
-      std::map<types::global_dof_index, double>      &row,
-      const unsigned int                              a,
-      const std::array<types::global_dof_index, n_t> &rows,
-      const std::array<LinearizedValue, n_t>         &v,
-      const std::array<double, n_t>                  &e,
-      const double                                    mu,
-      const double                                    xi,
-      const double                                    trial_norm,
-      const double                                    c_t)
-    {
-      for (unsigned int b = 0; b < n_t; ++b)
-        {
-          const double curvature =
-            -mu * xi * ((a == b ? 1. : 0.) - e[a] * e[b]) / trial_norm;
-          row[rows[b]] += curvature;
-          for (const auto &d : v[b].derivatives)
-            row[d.first] += curvature * c_t * d.second;
-        }
-    }
   } // namespace
 
   void
@@ -421,134 +396,6 @@ namespace ContactDynamics
   }
 
   template <int dim>
-  std::array<LinearizedValue, dim - 1>
-  SurfaceContact<dim>::normalized_slip_rates(PairData          &pair,
-                                             const unsigned int j,
-                                             const VectorType  &u) const
-  {
-    // the slip rates divided by the node's weight (if c_n is normalized);
-    // the node's state shows them and the tangential multipliers
-    NodeState                           &node = pair.nodes[j];
-    std::array<LinearizedValue, dim - 1> v;
-    const double                         w =
-      (complementarity.normalize_c_n && node.projected) ? node.weight : 1.;
-    for (unsigned int a = 0; a + 1 < dim; ++a)
-      {
-        const double lambda_t       = u(pair.secondary.dofs[j][dim + 1 + a]);
-        const LinearizedValue &slip = pair.slip_rate[j][a];
-        v[a].value                  = slip.value / w;
-        for (const auto &d : slip.derivatives)
-          v[a].derivatives[d.first] += d.second / w;
-        if (complementarity.normalize_c_n && node.projected)
-          for (const auto &d : pair.weight[j].derivatives)
-            v[a].derivatives[d.first] -= slip.value * d.second / (w * w);
-        node.tangential[a] = lambda_t * traction_per_multiplier(pair, j, u);
-        node.slip_rate[a]  = v[a].value;
-      }
-    return v;
-  }
-
-  template <int dim>
-  void
-  SurfaceContact<dim>::assemble_friction(PairData              &pair,
-                                         const unsigned int     j,
-                                         const bool             active,
-                                         const LinearizedValue &constraint,
-                                         const VectorType      &u,
-                                         const LinearSystem    &system)
-  {
-    // Coulomb friction (paper equation 8) in its semi-smooth form, for the
-    // vector lambda_t of the dim - 1 tangential multipliers: with
-    // xi = lambda_n - c_n g (the normal argument) and s = lambda_t + c_t v,
-    //   inactive:           lambda_t = 0
-    //   stick (|s| < mu xi): v = 0 (written c_t v = 0)
-    //   slip:               lambda_t - mu xi s / |s| = 0
-    // (the slip direction from the trial traction s, as in Hueeber, Stadler
-    // and Wohlmuth 2008; in 2-D s / |s| is its sign)
-    constexpr unsigned int        n_t   = dim - 1;
-    NodeState                    &node  = pair.nodes[j];
-    const double                  scale = pair.secondary.reference_weight[j];
-    const double                  mu    = pair.friction_coefficient;
-    const types::global_dof_index normal_row = pair.secondary.dofs[j][dim];
-    const double                  lambda_n   = u(normal_row);
-    std::array<types::global_dof_index, n_t> rows;
-    std::array<double, n_t>                  lambda_t;
-    for (unsigned int a = 0; a < n_t; ++a)
-      {
-        rows[a]     = pair.secondary.dofs[j][dim + 1 + a];
-        lambda_t[a] = u(rows[a]);
-      }
-    const std::array<LinearizedValue, n_t> v =
-      normalized_slip_rates(pair, j, u);
-    node.stick = false;
-    if (system.constraints.is_constrained(rows[0]))
-      return;
-
-    const double            xi = lambda_n - constraint.value;
-    std::array<double, n_t> trial;
-    double                  trial_norm = 0;
-    for (unsigned int a = 0; a < n_t; ++a)
-      {
-        trial[a] = lambda_t[a] + complementarity.c_t * v[a].value;
-        trial_norm += trial[a] * trial[a];
-      }
-    trial_norm = std::sqrt(trial_norm);
-    if (!active)
-      {
-        for (unsigned int a = 0; a < n_t; ++a)
-          {
-            system.residual(rows[a]) += scale * lambda_t[a];
-            if (system.with_jacobian)
-              system.jacobian.add(rows[a], rows[a], scale);
-          }
-        return;
-      }
-    // (|s| = 0 sticks: active means xi > 0, unless mu xi underflows)
-    if (trial_norm < mu * xi || trial_norm == 0)
-      {
-        node.stick = true;
-        ++n_stick;
-        for (unsigned int a = 0; a < n_t; ++a)
-          {
-            system.residual(rows[a]) +=
-              scale * complementarity.c_t * v[a].value;
-            if (system.with_jacobian)
-              system.add_row(rows[a],
-                             v[a].derivatives,
-                             scale * complementarity.c_t);
-          }
-        return;
-      }
-    ++n_slip;
-    // d(s / |s|)/ds = (I - e e^T) / |s|, e = s / |s|: zero in 2-D
-    std::array<double, n_t> e;
-    for (unsigned int a = 0; a < n_t; ++a)
-      e[a] = trial[a] / trial_norm;
-    for (unsigned int a = 0; a < n_t; ++a)
-      {
-        system.residual(rows[a]) += scale * (lambda_t[a] - mu * xi * e[a]);
-        if (!system.with_jacobian)
-          continue;
-        std::map<types::global_dof_index, double> row;
-        row[rows[a]] += 1.;
-        row[normal_row] -= mu * e[a];
-        for (const auto &d : constraint.derivatives)
-          row[d.first] += mu * e[a] * d.second;
-        if (dim == 3)
-          add_direction_derivatives<n_t>(row,
-                                         a,
-                                         rows,
-                                         v,
-                                         e,
-                                         mu,
-                                         xi,
-                                         trial_norm,
-                                         complementarity.c_t);
-        system.add_row(rows[a], row, scale);
-      }
-  }
-
-  template <int dim>
   void
   SurfaceContact<dim>::finish_assembly(const LinearSystem &system)
   {
@@ -599,44 +446,33 @@ namespace ContactDynamics
           fields[f].set(n, *x++);
   }
 
-#define INSTANTIATE(dim)                                                              \
-  template void SurfaceContact<dim>::assemble(                                        \
-    const TrialState &,                                                               \
-    const AffineConstraints<double> &,                                                \
-    const bool,                                                                       \
-    VectorType &,                                                                     \
-    MatrixType &,                                                                     \
-    VectorType &);                                                                    \
-  template void SurfaceContact<dim>::assemble_patches(PairData &,                     \
-                                                      const TrialState &,             \
-                                                      const LinearSystem &);          \
-  template void SurfaceContact<dim>::add_forces(const PatchForces &,                  \
-                                                const LinearSystem &);                \
-  template void SurfaceContact<dim>::exchange_node_sums(PairData &) const;            \
-  template void SurfaceContact<dim>::assemble_nodes(PairData &,                       \
-                                                    const TrialState &,               \
-                                                    const LinearSystem &);            \
-  template LinearizedValue SurfaceContact<dim>::held_gap_rate(                        \
-    PairData &,                                                                       \
-    const unsigned int,                                                               \
-    const TrialState &) const;                                                        \
-  template bool SurfaceContact<dim>::assemble_normal(PairData &,                      \
-                                                     const unsigned int,              \
-                                                     const TrialState &,              \
-                                                     const LinearSystem &,            \
-                                                     LinearizedValue &);              \
-  template std::array<LinearizedValue, dim - 1>                                       \
-                SurfaceContact<dim>::normalized_slip_rates(PairData &,                \
-                                             const unsigned int,        \
-                                             const VectorType &) const; \
-  template void SurfaceContact<dim>::assemble_friction(                               \
-    PairData &,                                                                       \
-    const unsigned int,                                                               \
-    const bool,                                                                       \
-    const LinearizedValue &,                                                          \
-    const VectorType &,                                                               \
-    const LinearSystem &);                                                            \
-  template void SurfaceContact<dim>::finish_assembly(const LinearSystem &);           \
+#define INSTANTIATE(dim)                                                     \
+  template void SurfaceContact<dim>::assemble(                               \
+    const TrialState &,                                                      \
+    const AffineConstraints<double> &,                                       \
+    const bool,                                                              \
+    VectorType &,                                                            \
+    MatrixType &,                                                            \
+    VectorType &);                                                           \
+  template void SurfaceContact<dim>::assemble_patches(PairData &,            \
+                                                      const TrialState &,    \
+                                                      const LinearSystem &); \
+  template void SurfaceContact<dim>::add_forces(const PatchForces &,         \
+                                                const LinearSystem &);       \
+  template void SurfaceContact<dim>::exchange_node_sums(PairData &) const;   \
+  template void SurfaceContact<dim>::assemble_nodes(PairData &,              \
+                                                    const TrialState &,      \
+                                                    const LinearSystem &);   \
+  template LinearizedValue SurfaceContact<dim>::held_gap_rate(               \
+    PairData &,                                                              \
+    const unsigned int,                                                      \
+    const TrialState &) const;                                               \
+  template bool SurfaceContact<dim>::assemble_normal(PairData &,             \
+                                                     const unsigned int,     \
+                                                     const TrialState &,     \
+                                                     const LinearSystem &,   \
+                                                     LinearizedValue &);     \
+  template void SurfaceContact<dim>::finish_assembly(const LinearSystem &);  \
   template void SurfaceContact<dim>::gather_node_states();
 
   INSTANTIATE(2)

@@ -8,6 +8,7 @@
 
 #include <contact_dynamics/contact/surface_contact.h>
 
+#include <array>
 #include <functional>
 #include <map>
 #include <set>
@@ -33,7 +34,10 @@ namespace ContactDynamics
    * and secondary node the primary face of the projection at the last
    * committed step, and at the last assembly of this attempt (what the next
    * iteration keeps; reset to the committed faces when an attempt starts,
-   * committed when the step is accepted).
+   * committed when the step is accepted). In 3-D likewise the coordinate
+   * axis each node's friction tangents are built from (tangent_basis()):
+   * kept while the contact normal stays clear of it, so that the frame does
+   * not turn with the primary face a node projects onto.
    */
   class FaceMemory : public ContactHistoryOwner
   {
@@ -54,14 +58,16 @@ namespace ContactDynamics
     void
     start_attempt(const ContactHistoryContext &) override
     {
-      trial = committed;
+      trial      = committed;
+      trial_axis = committed_axis;
     }
 
     /** The faces of the converged state's projections (the last assembly). */
     void
     commit(const ContactHistoryContext &) override
     {
-      committed = trial;
+      committed      = trial;
+      committed_axis = trial_axis;
     }
 
     void
@@ -72,12 +78,17 @@ namespace ContactDynamics
     load(const CheckpointData        &data,
          const ContactHistoryContext &context) override;
 
-    /** The faces refer to the old mesh's nodes: the memory starts empty. */
+    /**
+     * The faces refer to the old mesh's nodes: the memory starts empty (the
+     * tangent axes are chosen again from the normals).
+     */
     void
     transfer(const ContactHistoryContext &) override
     {
       committed.clear();
       trial.clear();
+      committed_axis.clear();
+      trial_axis.clear();
     }
 
     /** The trial faces of a pair's nodes (empty at first). */
@@ -87,12 +98,26 @@ namespace ContactDynamics
       return trial[pair];
     }
 
+    /**
+     * The tangent axis of node j of a pair's n nodes for the contact
+     * normal n (3-D): the trial one, chosen anew (the axis least aligned
+     * with n) where there is none or n has come within about 37 degrees of
+     * it.
+     */
+    unsigned int
+    tangent_axis(const unsigned int           pair,
+                 const unsigned int           j,
+                 const unsigned int           n_nodes,
+                 const std::array<double, 3> &normal);
+
     std::map<unsigned int, std::vector<unsigned int>> trial;
 
   private:
     const MPI_Comm                                   &comm;
     std::function<unsigned int()>                     n_pairs;
     std::map<unsigned int, std::vector<unsigned int>> committed;
+    std::map<unsigned int, std::vector<unsigned int>> trial_axis,
+      committed_axis;
   };
 
   template <int dim>
