@@ -113,6 +113,38 @@ namespace ContactDynamics
       return 1;
     }
 
+    template <unsigned int n>
+    double
+    dot(const std::array<double, n> &x, const std::array<double, n> &y)
+    {
+      double sum = 0;
+      for (unsigned int a = 0; a < n; ++a)
+        sum += x[a] * y[a];
+      return sum;
+    }
+
+    // the dofs of node j's tangential multipliers
+    template <int dim>
+    std::array<types::global_dof_index, dim - 1>
+    tangential_rows(const ContactPairData<dim> &pair, const unsigned int j)
+    {
+      std::array<types::global_dof_index, dim - 1> rows;
+      for (unsigned int a = 0; a + 1 < dim; ++a)
+        rows[a] = pair.secondary.dofs[j][dim + 1 + a];
+      return rows;
+    }
+
+    template <unsigned int n>
+    std::array<double, n>
+    values_at(const std::array<types::global_dof_index, n> &dofs,
+              const TrilinosWrappers::MPI::Vector          &u)
+    {
+      std::array<double, n> values;
+      for (unsigned int a = 0; a < n; ++a)
+        values[a] = u(dofs[a]);
+      return values;
+    }
+
     // Friction at a node with held tangential directions (held_tangents()):
     // in the basis q no multiplier along them, along the free one (3-D, one
     // held) Coulomb's law in one dimension. Returns whether the node sticks.
@@ -124,15 +156,16 @@ namespace ContactDynamics
                            const std::array<std::array<double, n_t>, n_t> &q,
                            const std::array<LinearizedValue, n_t>         &v,
                            const double                                    xi,
-                           const LinearizedValue &constraint,
-                           const std::array<types::global_dof_index, n_t> &rows,
-                           const std::array<double, n_t> &lambda_t,
-                           const double                   c_t,
-                           const ContactLinearSystem     &system)
+                           const LinearizedValue               &constraint,
+                           const TrilinosWrappers::MPI::Vector &u,
+                           const double                         c_t,
+                           const ContactLinearSystem           &system)
     {
-      const double scale = pair.secondary.reference_weight[j];
-      const double mu    = pair.friction_coefficient;
-      bool         stick = false;
+      const auto   rows     = tangential_rows<dim>(pair, j);
+      const auto   lambda_t = values_at<n_t>(rows, u);
+      const double scale    = pair.secondary.reference_weight[j];
+      const double mu       = pair.friction_coefficient;
+      bool         stick    = false;
       for (unsigned int a = 0; a < n_t; ++a)
         {
           std::map<types::global_dof_index, double> row;
@@ -225,13 +258,8 @@ namespace ContactDynamics
     const double                  mu    = pair.friction_coefficient;
     const types::global_dof_index normal_row = pair.secondary.dofs[j][dim];
     const double                  lambda_n   = u(normal_row);
-    std::array<types::global_dof_index, n_t> rows;
-    std::array<double, n_t>                  lambda_t;
-    for (unsigned int a = 0; a < n_t; ++a)
-      {
-        rows[a]     = pair.secondary.dofs[j][dim + 1 + a];
-        lambda_t[a] = u(rows[a]);
-      }
+    const auto                    rows       = tangential_rows<dim>(pair, j);
+    const auto                    lambda_t   = values_at<n_t>(rows, u);
     const std::array<LinearizedValue, n_t> v =
       normalized_slip_rates(pair, j, u);
     node.stick = false;
@@ -240,13 +268,9 @@ namespace ContactDynamics
 
     const double            xi = lambda_n - constraint.value;
     std::array<double, n_t> trial;
-    double                  trial_norm = 0;
     for (unsigned int a = 0; a < n_t; ++a)
-      {
-        trial[a] = lambda_t[a] + complementarity.c_t * v[a].value;
-        trial_norm += trial[a] * trial[a];
-      }
-    trial_norm = std::sqrt(trial_norm);
+      trial[a] = lambda_t[a] + complementarity.c_t * v[a].value;
+    const double trial_norm = std::sqrt(dot<n_t>(trial, trial));
     if (!active)
       {
         for (unsigned int a = 0; a < n_t; ++a)
@@ -268,8 +292,7 @@ namespace ContactDynamics
                                                       v,
                                                       xi,
                                                       constraint,
-                                                      rows,
-                                                      lambda_t,
+                                                      u,
                                                       complementarity.c_t,
                                                       system);
         ++(node.stick ? n_stick : n_slip);
