@@ -150,6 +150,11 @@ namespace ContactDynamics
           << " unknowns; E_kin+E_el = " << std::setprecision(10)
           << energy_before << " -> " << energy_after << std::setprecision(6)
           << std::endl;
+    watchdog.act(watchdog.mesh_change_warning(energy_account.balance(),
+                                              energy_after - energy_before,
+                                              time),
+                 step,
+                 pcout);
     return true;
   }
 

@@ -202,16 +202,7 @@ namespace ContactDynamics
             << "  balance error = " << energies.error() << std::defaultfloat
             << std::endl;
     // after the step's outputs: a stop loses nothing
-    const std::string warning = watchdog.warning(created, step);
-    // (the same on every process: one message)
-    AssertThrow(warning.empty() || !watchdog.stops(),
-                ExcCollective(warning +
-                              " The run stops (Energy watchdog/Action "
-                              "= stop) at step " +
-                              std::to_string(step) +
-                              "; what was written before is complete."));
-    if (!warning.empty())
-      pcout << "Warning: " << warning << std::endl;
+    watchdog.act(watchdog.warning(created, step), step, pcout);
     if (!small_strain_warned)
       {
         const std::string strain =

@@ -1,4 +1,7 @@
+#include <deal.II/base/conditional_ostream.h>
+
 #include <contact_dynamics/mechanics/energy_watchdog.h>
+#include <contact_dynamics/parallel.h>
 #include <contact_dynamics/parameters.h>
 
 #include <algorithm>
@@ -28,7 +31,9 @@ namespace ContactDynamics
       "undamped variants (the bouncing blocks 27 %, where the contact work "
       "of the held nodes swings up at impact; the ironing 10.1 %), an "
       "impulsive obstacle start (31 %) and impacts shorter than a time "
-      "step (doc/extreme-cases.md). Costs nothing.");
+      "step (doc/extreme-cases.md). A mesh change that raises kinetic "
+      "plus elastic energy by more than this fraction warns likewise, at "
+      "the mesh change. Costs nothing.");
     prm.declare_entry("Action",
                       defaults.stop ? "stop" : "warn",
                       Patterns::Selection("warn|stop"),
@@ -54,13 +59,39 @@ namespace ContactDynamics
   {
     const double created = balance.error() - last_error;
     last_error           = balance.error();
-    const double scale =
-      std::max({balance.kinetic + balance.elastic,
-                std::abs(balance.external),
-                std::abs(balance.obstacle),
-                balance.initial,
-                balance.dissipated + balance.frictional + balance.numerical});
+    const double scale   = energy_scale(balance);
     return created > 0 && scale > 0 ? created / scale : 0.;
+  }
+
+  double
+  EnergyWatchdog::energy_scale(const EnergyBalance &balance)
+  {
+    return std::max(
+      {balance.kinetic + balance.elastic,
+       std::abs(balance.external),
+       std::abs(balance.obstacle),
+       balance.initial,
+       balance.dissipated + balance.frictional + balance.numerical});
+  }
+
+  std::string
+  EnergyWatchdog::mesh_change_warning(const EnergyBalance &balance,
+                                      const double         created,
+                                      const double         time) const
+  {
+    const double scale    = energy_scale(balance);
+    const double fraction = created > 0 && scale > 0 ? created / scale : 0.;
+    if (limit == 0 || !(fraction > limit))
+      return "";
+    return "Energy watchdog: the mesh change at t = " + format_number(time) +
+           " created " + format_number(100 * fraction) +
+           " % of the run's energy scale (Energy watchdog/Fraction = " +
+           format_number(limit) +
+           ") in the transfer of the state to the new mesh (statistics "
+           "column transfer_energy); typical cause: coarsening where the "
+           "strain or the velocity still varies. Mesh refinement/Coarsen = "
+           "false, more Buffer cells or a larger Interval keep it down "
+           "(doc/refinement.md).";
   }
 
   std::string
@@ -76,5 +107,21 @@ namespace ContactDynamics
            "step resolves, or contact without stabilization. A smaller Time "
            "step, or Stabilization = velocity update (it returns the step's "
            "contact work), removes it (doc/extreme-cases.md).";
+  }
+
+  void
+  EnergyWatchdog::act(const std::string        &warning,
+                      const unsigned int        step,
+                      const ConditionalOStream &out) const
+  {
+    // (the same on every process: one message)
+    AssertThrow(warning.empty() || !stop,
+                ExcCollective(warning +
+                              " The run stops (Energy watchdog/Action "
+                              "= stop) at step " +
+                              std::to_string(step) +
+                              "; what was written before is complete."));
+    if (!warning.empty())
+      out << "Warning: " << warning << std::endl;
   }
 } // namespace ContactDynamics

@@ -11,6 +11,11 @@
 
 #include <string>
 
+namespace dealii
+{
+  class ConditionalOStream;
+}
+
 namespace ContactDynamics
 {
   using dealii::ParameterHandler;
@@ -46,16 +51,35 @@ namespace ContactDynamics
     std::string
     warning(const double fraction, const unsigned int step) const;
 
-    /** Whether a warning stops the run. */
-    bool
-    stops() const
-    {
-      return stop;
-    }
+    /**
+     * The message for a mesh change at `time` that created the energy
+     * `created` (the transfer's change of kinetic plus elastic energy) above
+     * the Fraction of the energy scale of `balance`, or "". (Judged at the
+     * mesh change: the balance error, which the steps are judged by, counts
+     * the transfer as a source; so a restart from a checkpoint written
+     * after the change judges the same steps.)
+     */
+    std::string
+    mesh_change_warning(const EnergyBalance &balance,
+                        const double         created,
+                        const double         time) const;
+
+    /**
+     * A warning (if not "") stops the run after `step` (Action = stop,
+     * collectively) or goes to `out`.
+     */
+    void
+    act(const std::string                &warning,
+        const unsigned int                step,
+        const dealii::ConditionalOStream &out) const;
 
   private:
-    double limit = 0.1;
-    bool   stop  = false;
+    // the largest of the energies of the run (created_fraction())
+    static double
+    energy_scale(const EnergyBalance &balance);
+
+    double limit      = 0.1;
+    bool   stop       = false;
     double last_error = 0;
   };
 } // namespace ContactDynamics
