@@ -10,12 +10,50 @@
 #include <contact_dynamics/parameters.h>
 #include <contact_dynamics/solvers/linear_solver.h>
 
+#include <Epetra_CrsMatrix.h>
 #include <Teuchos_ParameterList.hpp>
+#include <algorithm>
 
 namespace ContactDynamics
 {
   namespace
   {
+    // Reduces the given rows (locally owned, sorted) of a matrix to their
+    // diagonal and removes their columns from every other row (collective:
+    // the columns owned elsewhere are gathered).
+    void
+    eliminate_rows_and_columns(TrilinosWrappers::SparseMatrix &matrix,
+                               const std::vector<types::global_dof_index> &rows)
+    {
+      std::vector<types::global_dof_index> all;
+      for (const auto &part :
+           Utilities::MPI::all_gather(matrix.get_mpi_communicator(), rows))
+        all.insert(all.end(), part.begin(), part.end());
+      std::sort(all.begin(), all.end());
+      if (all.empty())
+        return;
+      Epetra_CrsMatrix &a =
+        const_cast<Epetra_CrsMatrix &>(matrix.trilinos_matrix());
+      for (int r = 0; r < a.NumMyRows(); ++r)
+        {
+          int     n       = 0;
+          double *values  = nullptr;
+          int    *indices = nullptr;
+          a.ExtractMyRowView(r, n, values, indices);
+          const types::global_dof_index row = a.GRID(r);
+          const bool                    constrained =
+            std::binary_search(all.begin(), all.end(), row);
+          for (int k = 0; k < n; ++k)
+            {
+              const types::global_dof_index column = a.GCID(indices[k]);
+              if (column != row &&
+                  (constrained ||
+                   std::binary_search(all.begin(), all.end(), column)))
+                values[k] = 0;
+            }
+        }
+    }
+
     const Selection<LinearSolver::Type> solver_names{
       {LinearSolver::Type::klu, "KLU"},
       {LinearSolver::Type::umfpack, "UMFPACK"},
@@ -76,6 +114,24 @@ namespace ContactDynamics
       "iterations when this is large. Contact makes the "
       "system ill-conditioned: below about 1e-8 GMRES can "
       "fail with a loss of precision.");
+    prm.declare_entry(
+      "AMG contact elimination",
+      default_text(defaults.eliminate_constrained),
+      Patterns::Bool(),
+      "AMG: the hierarchy is built on a copy of the condensed matrix whose "
+      "rows that carry a contact constraint (an active normal or a "
+      "sticking tangential condition) are reduced to their diagonal, in "
+      "their rows and their columns, as if those components were "
+      "prescribed; GMRES still solves the condensed system, and the "
+      "hierarchy is rebuilt whenever that set of rows changes. The "
+      "row-replaced operator (false) defeats the aggregation as the contact "
+      "grows. Measured (doc/solvers.md): the 2-D ironing (34k unknowns, "
+      "t in [0, 1]) needs 27.7 instead of 44 GMRES iterations per Newton "
+      "iteration and 38 % less linear-solve time, with 71 hierarchy builds "
+      "instead of 5; the 3-D ironing (16k, indentation) 31.2 instead of "
+      "28.0 (+12 %): a constrained normal that is not along a coordinate "
+      "axis is eliminated only in its largest component. Off by default "
+      "until the elimination in each node's frame replaces it.");
     prm.declare_entry("Maximum linear iterations",
                       default_text(defaults.max_iterations),
                       Patterns::Integer(1),
@@ -90,7 +146,8 @@ namespace ContactDynamics
     type           = requested == Type::automatic ? Type::klu : requested;
     tolerance      = prm.get_double("Linear tolerance");
     max_iterations = prm.get_integer("Maximum linear iterations");
-    this->verbose  = verbose;
+    eliminate_constrained = prm.get_bool("AMG contact elimination");
+    this->verbose         = verbose;
   }
 
   std::string
@@ -150,6 +207,7 @@ namespace ContactDynamics
     amg_matrix.reset();
     iterations_after_build = 0;
     rebuild_amg            = false;
+    built_rows.clear();
   }
 
   void
@@ -237,6 +295,9 @@ namespace ContactDynamics
     const auto build = [&]() {
       amg_matrix = std::make_unique<TrilinosWrappers::SparseMatrix>();
       amg_matrix->copy_from(matrix);
+      built_rows = constrained_rows;
+      if (eliminate_constrained)
+        eliminate_rows_and_columns(*amg_matrix, constrained_rows);
       amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
       TrilinosWrappers::PreconditionAMG::AdditionalData data(true, false);
       data.smoother_sweeps = 2;
@@ -257,6 +318,11 @@ namespace ContactDynamics
       ++amg_builds;
       iterations_after_build = 0;
     };
+    // (collective: every process builds, or none)
+    if (eliminate_constrained &&
+        Utilities::MPI::max(int(constrained_rows != built_rows),
+                            matrix.get_mpi_communicator()) > 0)
+      rebuild_amg = true;
     if (!amg || rebuild_amg)
       build();
     rebuild_amg = false;

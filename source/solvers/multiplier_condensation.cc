@@ -479,15 +479,35 @@ namespace ContactDynamics
     }
 
     /**
+     * Whether the row of multiplier m is a constraint on the displacements
+     * (active normal, stick) rather than an equation for the multipliers
+     * (inactive, slip): it has no entry on the group's multipliers.
+     */
+    bool
+    is_constraint(const Epetra_CrsMatrix &matrix,
+                  const Index             m,
+                  const MultiplierGroup  &group)
+    {
+      for (const auto &x : read_row(matrix, m))
+        if (x.second != 0 && std::find(group.multipliers.begin(),
+                                       group.multipliers.end(),
+                                       x.first) != group.multipliers.end())
+          return false;
+      return true;
+    }
+
+    /**
      * Step 3: the rows of a group's displacements replaced by its
      * equations, each on the displacement row with the largest diagonals.
      */
     void
     replace_group_rows(const CondensableGroup              &g,
+                       const Epetra_CrsMatrix              &matrix,
                        const TrilinosWrappers::MPI::Vector &rhs,
                        const std::vector<Index>            &all_condensed,
                        Substitution                        &substitute,
-                       ReplacedRows                        &replaced)
+                       ReplacedRows                        &replaced,
+                       std::vector<Index>                  &constrained)
     {
       std::vector<SparseRow> equations;
       std::vector<double>    values;
@@ -508,6 +528,9 @@ namespace ContactDynamics
           for (auto &x : equation)
             x.second *= factor;
           replaced[row] = {std::move(equation), factor * values[best[d]]};
+          if (best[d] < g.group->multipliers.size() &&
+              is_constraint(matrix, g.group->multipliers[best[d]], *g.group))
+            constrained.push_back(row);
         }
     }
 
@@ -688,8 +711,16 @@ namespace ContactDynamics
 
     // 3. the condensed rows, 4. the other rows that change
     ReplacedRows replaced;
+    constrained.clear();
     for (const auto &g : condensed)
-      replace_group_rows(g, rhs, all_condensed, substitute, replaced);
+      replace_group_rows(g,
+                         matrix,
+                         rhs,
+                         all_condensed,
+                         substitute,
+                         replaced,
+                         constrained);
+    std::sort(constrained.begin(), constrained.end());
     replace_other_rows(matrix, rhs, all_condensed, substitute, replaced);
 
     const bool fits = fits_pattern(matrix, replaced, copy_jacobian, comm);

@@ -204,6 +204,7 @@ namespace ContactDynamics
                                     linear_solver.wants_condensed_matrix());
             }
             TrilinosWrappers::MPI::Vector rhs(condensation.rhs());
+            linear_solver.set_constrained_rows(condensation.constrained_rows());
             result.linear_iterations +=
               linear_solver.solve(condensation.matrix(),
                                   rhs,

@@ -6,6 +6,8 @@
 #ifndef contact_dynamics_solvers_linear_solver_h
 #define contact_dynamics_solvers_linear_solver_h
 
+#include <deal.II/base/types.h>
+
 #include <contact_dynamics/solvers/direct_factorization.h>
 #include <contact_dynamics/solvers/trilinos_forward.h>
 
@@ -61,6 +63,19 @@ namespace ContactDynamics
     choose(const unsigned long n_unknowns,
            const bool          dynamic,
            const unsigned int  n_processes);
+
+    /**
+     * AMG: the locally owned rows of the next (condensed) matrix that
+     * carry a contact constraint (MultiplierCondensation::constrained_rows()).
+     * With `AMG contact elimination`, the hierarchy is built on a copy of
+     * the matrix with their rows and columns reduced to the diagonal, and
+     * rebuilt when they change.
+     */
+    void
+    set_constrained_rows(const std::vector<types::global_dof_index> &rows)
+    {
+      constrained_rows = rows;
+    }
 
     /** The solver works best on a displacement-only (condensed) matrix. */
     bool
@@ -167,8 +182,11 @@ namespace ContactDynamics
     unsigned int                                       n_modes         = 0;
     unsigned int                                       dofs_per_vertex = 1;
     unsigned int iterations_after_build                                = 0;
-    unsigned int amg_builds                                            = 0;
-    bool         rebuild_amg                                           = false;
+    bool         eliminate_constrained                                 = false;
+    // of the next matrix, and those the hierarchy was built with
+    std::vector<types::global_dof_index> constrained_rows, built_rows;
+    unsigned int                         amg_builds  = 0;
+    bool                                 rebuild_amg = false;
   };
 } // namespace ContactDynamics
 

@@ -110,6 +110,18 @@ namespace ContactDynamics
     void
     recover(TrilinosWrappers::MPI::Vector &solution) const;
 
+    /**
+     * The locally owned displacement rows that carry a constraint after
+     * the last condense(), sorted: an active normal or a sticking
+     * tangential condition (the multiplier's row has no multiplier
+     * entries), placed on one of its node's rows.
+     */
+    const std::vector<types::global_dof_index> &
+    constrained_rows() const
+    {
+      return constrained;
+    }
+
     /** Multipliers eliminated in the last condense() (all processes). */
     unsigned int
     n_condensed() const
@@ -123,6 +135,7 @@ namespace ContactDynamics
     // dlambda_m = -e_m - F_m du for the owned condensed multipliers
     std::vector<internal::MultiplierElimination> eliminations;
     unsigned int                                 n_condensed_multipliers = 0;
+    std::vector<types::global_dof_index>         constrained;
   };
 } // namespace ContactDynamics
 
