@@ -52,9 +52,9 @@ namespace ContactDynamics
     // held directions first.
     template <unsigned int n_t>
     unsigned int
-    held_tangents(const std::array<LinearizedValue, n_t>   &v,
-                  const AffineConstraints<double>          &constraints,
-                  std::array<std::array<double, n_t>, n_t> &q)
+    held_candidates(const std::array<LinearizedValue, n_t>   &v,
+                    const AffineConstraints<double>          &constraints,
+                    std::array<std::array<double, n_t>, n_t> &q)
     {
       constexpr double held_fraction = 1e-2; // of the squared row norm
       // the Gram matrices A of the rows and F of their free parts (a
@@ -145,6 +145,47 @@ namespace ContactDynamics
       return values;
     }
 
+    // The held_candidates() along which the node does not slide (to 10 %
+    // of its slip rate, or below `negligible`): against a rigid obstacle,
+    // whose side has no dofs, a direction that depends on the secondary's
+    // Dirichlet dofs only but moves (a surface driven along the obstacle)
+    // is driven, not held, and keeps its friction.
+    template <unsigned int n_t>
+    unsigned int
+    held_tangents(const std::array<LinearizedValue, n_t>   &v,
+                  const AffineConstraints<double>          &constraints,
+                  const double                              negligible,
+                  std::array<std::array<double, n_t>, n_t> &q)
+    {
+      const unsigned int n_held = held_candidates<n_t>(v, constraints, q);
+      double             rate   = 0;
+      for (unsigned int a = 0; a < n_t; ++a)
+        rate += v[a].value * v[a].value;
+      rate = std::sqrt(rate);
+      for (unsigned int a = 0; a < n_held; ++a)
+        {
+          double along = 0;
+          for (unsigned int b = 0; b < n_t; ++b)
+            along += q[a][b] * v[b].value;
+          if (std::abs(along) > std::max(0.1 * rate, negligible))
+            return 0;
+        }
+      return n_held;
+    }
+
+    // A slip rate that held_tangents() may ignore: none for a meshed pair,
+    // whose held direction is held on both sides; against an obstacle, one
+    // that does not change the stick test |s| < mu xi
+    template <int dim>
+    double
+    negligible_rate(const ContactPairData<dim> &pair,
+                    const double                xi,
+                    const double                c_t)
+    {
+      return pair.obstacle ? 1e-6 * pair.friction_coefficient * xi / c_t :
+                             HUGE_VAL;
+    }
+
     // Friction at a node with held tangential directions (held_tangents()):
     // in the basis q no multiplier along them, along the free one (3-D, one
     // held) Coulomb's law in one dimension. Returns whether the node sticks.
@@ -165,7 +206,8 @@ namespace ContactDynamics
       const auto   lambda_t = values_at<n_t>(rows, u);
       const double scale    = pair.secondary.reference_weight[j];
       const double mu       = pair.friction_coefficient;
-      bool         stick    = false;
+      // (held in every direction: it cannot slide)
+      bool stick = n_held == n_t;
       for (unsigned int a = 0; a < n_t; ++a)
         {
           std::map<types::global_dof_index, double> row;
@@ -282,8 +324,8 @@ namespace ContactDynamics
         return;
       }
     std::array<std::array<double, n_t>, n_t> q;
-    if (const unsigned int n_held =
-          held_tangents<n_t>(v, system.constraints, q))
+    const double tiny = negligible_rate(pair, xi, complementarity.c_t);
+    if (const auto n_held = held_tangents<n_t>(v, system.constraints, tiny, q))
       {
         node.stick = assemble_held_friction<dim, n_t>(pair,
                                                       j,

@@ -87,8 +87,8 @@ namespace ContactDynamics
            " created " + format_number(100 * fraction) +
            " % of the run's energy scale (Energy watchdog/Fraction = " +
            format_number(limit) +
-           ") in the transfer of the state to the new mesh (statistics "
-           "column transfer_energy); typical cause: coarsening where the "
+           ") in the transfer of the state to the new mesh (the statistics "
+           "column transfer_energy sums these changes); typical cause: coarsening where the "
            "strain or the velocity still varies. Mesh refinement/Coarsen = "
            "false, more Buffer cells or a larger Interval keep it down "
            "(doc/refinement.md).";
