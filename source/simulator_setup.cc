@@ -175,7 +175,8 @@ namespace ContactDynamics
         newton.choose_linear_solver(dof_handler.n_dofs(),
                                     integrator.is_dynamic(),
                                     Utilities::MPI::n_mpi_processes(
-                                      mpi_communicator));
+                                      mpi_communicator),
+                                    dim);
     });
     // after a mesh change: once the candidates of the transferred state are
     // known (reevaluate_committed_state())

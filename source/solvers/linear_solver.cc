@@ -66,6 +66,15 @@ namespace ContactDynamics
     // quasi-static contact KLU stays faster up to 222k
     constexpr unsigned long amg_threshold     = 80000;
     constexpr unsigned long umfpack_threshold = 20000;
+    // 3-D (doc/solvers.md, 'Direct solvers by dimension'): KLU's fill
+    // grows too fast, UMFPACK wins from the smallest scenes on, with METIS
+    // from about 50k unknowns on; AMG and UMFPACK cross near 80k there too
+    constexpr unsigned long metis_threshold_3d = 50000;
+
+    const Selection<LinearSolver::Ordering> ordering_names{
+      {LinearSolver::Ordering::automatic, "auto"},
+      {LinearSolver::Ordering::amd, "AMD"},
+      {LinearSolver::Ordering::metis, "METIS"}};
   } // namespace
 
   LinearSolver::LinearSolver() = default;
@@ -101,9 +110,11 @@ namespace ContactDynamics
       "implied); the hierarchy is reused while GMRES needs at most twice "
       "the iterations it needed after its build. See doc/parallel.md and "
       "doc/solvers.md for what each costs. auto: AMG for dynamic problems "
-      "of at least 80,000 unknowns; below, UMFPACK on one process from "
-      "20,000 unknowns, KLU otherwise (the crossovers measured on the 2-D "
-      "scenes, doc/solvers.md; the run's log says which).");
+      "of at least 80,000 unknowns; below, in 2-D UMFPACK on one process "
+      "from 20,000 unknowns and KLU otherwise, in 3-D UMFPACK on one "
+      "process and MUMPS on several (KLU's fill grows too fast in 3-D: "
+      "3.7 times UMFPACK's time on the 16k 3-D ironing). The crossovers are "
+      "measured in doc/solvers.md; the run's log says which solver runs.");
     prm.declare_entry(
       "Linear tolerance",
       default_text(defaults.tolerance),
@@ -132,6 +143,15 @@ namespace ContactDynamics
       "28.0 (+12 %): a constrained normal that is not along a coordinate "
       "axis is eliminated only in its largest component. Off by default "
       "until the elimination in each node's frame replaces it.");
+    prm.declare_entry(
+      "Direct solver ordering",
+      ordering_names.name(defaults.ordering),
+      ordering_names.pattern(),
+      "UMFPACK's fill-reducing ordering, which decides the fill of the "
+      "factors and hence the cost of each factorization: AMD (approximate "
+      "minimum degree) or METIS (nested dissection). auto: METIS in 3-D, "
+      "AMD in 2-D. Measured (doc/solvers.md, 'Direct solvers by "
+      "dimension'): FILLME. KLU orders with AMD always.");
     prm.declare_entry("Maximum linear iterations",
                       default_text(defaults.max_iterations),
                       Patterns::Integer(1),
@@ -147,13 +167,15 @@ namespace ContactDynamics
     tolerance      = prm.get_double("Linear tolerance");
     max_iterations = prm.get_integer("Maximum linear iterations");
     eliminate_constrained = prm.get_bool("AMG contact elimination");
-    this->verbose         = verbose;
+    ordering      = ordering_names.value(prm.get("Direct solver ordering"));
+    this->verbose = verbose;
   }
 
   std::string
   LinearSolver::choose(const unsigned long n_unknowns,
                        const bool          dynamic,
-                       const unsigned int  n_processes)
+                       const unsigned int  n_processes,
+                       const unsigned int  dim)
   {
     AssertThrow(requested != Type::umfpack || n_processes == 1,
                 ExcMessage("Nonlinear solver/Linear solver = UMFPACK runs on "
@@ -165,11 +187,19 @@ namespace ContactDynamics
         release();
         if (dynamic && n_unknowns >= amg_threshold)
           type = Type::amg;
-        else if (n_processes == 1 && n_unknowns >= umfpack_threshold)
+        else if (n_processes == 1 &&
+                 (dim == 3 || n_unknowns >= umfpack_threshold))
           type = Type::umfpack;
+        else if (dim == 3)
+          type = Type::mumps;
         else
           type = Type::klu;
       }
+    const bool metis = ordering == Ordering::metis ||
+                       (ordering == Ordering::automatic && dim == 3 &&
+                        n_unknowns >= metis_threshold_3d);
+    umfpack.set_ordering(metis ? DirectFactorization::Ordering::metis :
+                                 DirectFactorization::Ordering::amd);
     return solver_names.name(type);
   }
 

@@ -29,6 +29,13 @@ namespace ContactDynamics
       umfpack
     };
 
+    // UMFPACK's fill-reducing ordering (KLU always orders with AMD)
+    enum class Ordering
+    {
+      amd,
+      metis
+    };
+
     explicit DirectFactorization(const Method method);
     ~DirectFactorization();
     DirectFactorization(const DirectFactorization &) = delete;
@@ -61,6 +68,20 @@ namespace ContactDynamics
       return n_pivoting;
     }
 
+    /**
+     * UMFPACK: the fill-reducing ordering of the next symbolic analysis
+     * (AMD by default); a change forgets the analysis.
+     */
+    void
+    set_ordering(const Ordering new_ordering);
+
+    /** UMFPACK: the entries of L and U of the last factorization. */
+    double
+    n_entries_of_factors() const
+    {
+      return n_factor_entries;
+    }
+
     /** Forgets the factorization and the analysis. */
     void
     clear();
@@ -87,6 +108,7 @@ namespace ContactDynamics
     factorize_klu(const bool new_pattern);
 
     const Method method;
+    Ordering     ordering = Ordering::amd;
     // the rows of the matrix, column indices sorted
     std::vector<std::int64_t> row_start, columns;
     std::vector<double>       values;
@@ -107,6 +129,7 @@ namespace ContactDynamics
     double       rcond_after_pivoting = 0;
     unsigned int n_symbolic           = 0;
     unsigned int n_pivoting           = 0;
+    double       n_factor_entries     = 0;
   };
 } // namespace ContactDynamics
 

@@ -30,7 +30,15 @@ namespace ContactDynamics
       mumps,
       gmres,
       amg,
-      automatic // resolved by choose(): UMFPACK, KLU or AMG
+      automatic // resolved by choose(): UMFPACK, KLU, MUMPS or AMG
+    };
+
+    // UMFPACK's ordering: `automatic` is METIS in 3-D and AMD in 2-D
+    enum class Ordering
+    {
+      automatic,
+      amd,
+      metis
     };
 
     LinearSolver();
@@ -53,16 +61,18 @@ namespace ContactDynamics
 
     /**
      * `Linear solver = auto`: AMG for dynamic problems of at least
-     * `amg_threshold` unknowns, otherwise UMFPACK on one process from
-     * `umfpack_threshold` unknowns and KLU below or on several processes
-     * (doc/solvers.md has the measured crossovers). Returns the
-     * name of the solver used. Throws if UMFPACK is asked for on several
-     * processes.
+     * `amg_threshold` unknowns; otherwise in 2-D UMFPACK on one process
+     * from `umfpack_threshold` unknowns and KLU below or on several
+     * processes, in 3-D UMFPACK on one process (METIS ordering from
+     * `metis_threshold_3d` unknowns) and MUMPS on several (doc/solvers.md
+     * has the measured crossovers). Returns the name of the solver used.
+     * Throws if UMFPACK is asked for on several processes.
      */
     std::string
     choose(const unsigned long n_unknowns,
            const bool          dynamic,
-           const unsigned int  n_processes);
+           const unsigned int  n_processes,
+           const unsigned int  dim);
 
     /**
      * AMG: the locally owned rows of the next (condensed) matrix that
@@ -156,6 +166,7 @@ namespace ContactDynamics
     double       tolerance      = 1e-6;
     unsigned int max_iterations = 1000;
     bool         verbose        = false;
+    Ordering     ordering       = Ordering::automatic;
 
     std::unique_ptr<SolverControl>                  solver_control;
     std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;

@@ -139,9 +139,10 @@ namespace ContactDynamics
     std::string
     choose_linear_solver(const unsigned long n_unknowns,
                          const bool          dynamic,
-                         const unsigned int  n_processes)
+                         const unsigned int  n_processes,
+                         const unsigned int  dim)
     {
-      return linear_solver.choose(n_unknowns, dynamic, n_processes);
+      return linear_solver.choose(n_unknowns, dynamic, n_processes, dim);
     }
 
     /** See LinearSolver::set_near_null_space(). */
