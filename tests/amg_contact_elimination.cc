@@ -1,14 +1,17 @@
-// AMG with the contact constraints eliminated from the matrix its
-// hierarchy is built on (Nonlinear solver/AMG contact elimination): the
-// shipped 2-D ironing (mortar.prm) at refinement factor 0.5 over its first
-// 0.6 s, when the tool indents and the contact zone grows, with the
+// AMG with the contact constraints eliminated in each secondary node's
+// frame (Nonlinear solver/AMG contact elimination, ContactFrameMultigrid):
+// the shipped 2-D ironing (mortar.prm) at refinement factor 0.5 over its
+// first 0.6 s, when the tool indents and the contact zone grows, with the
 // elimination and without. The preconditioner only changes the Krylov
 // path: the Newton iterations are the same and the energies and contact
-// forces agree to the linear tolerance's effect (1e-6 relative), while
-// GMRES needs fewer iterations per Newton iteration once the contact
-// zone has grown (t > 0.3: the model study of issue 40 and the full
-// ironing both show the row-replaced matrix losing its grip there; here
-// at least 15 % fewer). On two processes the same.
+// forces agree to the linear tolerance's effect (1e-6 relative). The
+// reference for the iteration counts is the contact-free problem (the
+// steps before the first contact, same mesh and solver): the model study
+// of issue 40 found that the row-replaced condensed operator defeats the
+// aggregation as the contact zone grows (here more than three times the
+// contact-free count after t = 0.3), and that eliminating the constrained
+// components in rows and columns brings it back to about the contact-free
+// count (here within twice). On two processes the same.
 #include <contact_dynamics/simulator.h>
 
 #include "tests.h"
@@ -73,11 +76,23 @@ main()
     }
   check_close("energies: largest relative difference", energy, 0., 1e-6);
   check_close("contact force: largest relative difference", force, 0., 1e-6);
-  const double ratio = per_newton(with, 0.3) / per_newton(without, 0.3);
-  check_true("GMRES iterations per Newton iteration after t = 0.3: at "
-             "least 15 % fewer with the elimination",
-             ratio < 0.85);
-  deallog << "GMRES iterations per Newton iteration after t = 0.3: "
-          << std::setprecision(3) << per_newton(with, 0.3) << " with, "
-          << per_newton(without, 0.3) << " without" << std::endl;
+  // the contact-free reference: the steps before the first contact
+  double free_linear = 0, free_newton = 0;
+  for (unsigned int i = 1; i < n_with.size(); ++i)
+    if (with.at("active_contact_nodes")[i] == 0)
+      {
+        free_linear += with.at("linear_iterations")[i];
+        free_newton += with.at("newton_iterations")[i];
+      }
+  const double free = free_linear / free_newton;
+  check_true("GMRES iterations per Newton iteration after t = 0.3: within "
+             "twice the contact-free count with the elimination",
+             per_newton(with, 0.3) < 2 * free);
+  check_true("GMRES iterations per Newton iteration after t = 0.3: more "
+             "than three times the contact-free count without it",
+             per_newton(without, 0.3) > 3 * free);
+  deallog << "GMRES iterations per Newton iteration: " << std::setprecision(3)
+          << free << " before the contact, after t = 0.3 "
+          << per_newton(with, 0.3) << " with, " << per_newton(without, 0.3)
+          << " without" << std::endl;
 }

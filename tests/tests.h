@@ -6,6 +6,9 @@
 #include <deal.II/base/logstream.h>
 #include <deal.II/base/mpi.h>
 
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector_memory.h>
+
 #include <fstream>
 #include <iomanip>
 
@@ -13,10 +16,18 @@ inline std::ofstream &
 initlog()
 {
   // the library uses MPI (Trilinos), also in serial
-  static int                                      argc   = 1;
-  static char                                     name[] = "test";
-  static char                                    *args[] = {name, nullptr};
-  static char                                   **argv   = args;
+  static int    argc   = 1;
+  static char   name[] = "test";
+  static char  *args[] = {name, nullptr};
+  static char **argv   = args;
+  // deal.II's pool of Trilinos vectors (a function-local static that every
+  // deal.II solver on them touches) made before `mpi`, so that it still
+  // exists when ~MPI_InitFinalize releases it
+  static const bool pool = [] {
+    dealii::GrowingVectorMemory<dealii::TrilinosWrappers::MPI::Vector> touch;
+    return true;
+  }();
+  (void)pool;
   static dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   // under mpirun the first process writes the output
   static std::ofstream logfile(

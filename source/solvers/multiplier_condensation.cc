@@ -507,7 +507,7 @@ namespace ContactDynamics
                        const std::vector<Index>            &all_condensed,
                        Substitution                        &substitute,
                        ReplacedRows                        &replaced,
-                       std::vector<Index>                  &constrained)
+                       std::vector<NodeFrame>              &frames)
     {
       std::vector<SparseRow> equations;
       std::vector<double>    values;
@@ -517,21 +517,41 @@ namespace ContactDynamics
       // each equation scaled to the diagonal of the stiffness row it
       // replaces: the same solution, and the smoothers of an algebraic
       // multigrid see the scale of the elasticity rows
+      std::vector<double> factors(g.rows.size());
       for (unsigned int d = 0; d < g.rows.size(); ++d)
         {
           const Index  row      = g.group->displacements[d];
           SparseRow    equation = equations[best[d]];
           const double diagonal = entry(equation, row);
           const double target   = std::abs(entry(g.rows[d], row));
-          const double factor =
-            (diagonal != 0 && target > 0) ? target / diagonal : 1.;
+          factors[d] = (diagonal != 0 && target > 0) ? target / diagonal : 1.;
           for (auto &x : equation)
-            x.second *= factor;
-          replaced[row] = {std::move(equation), factor * values[best[d]]};
-          if (best[d] < g.group->multipliers.size() &&
-              is_constraint(matrix, g.group->multipliers[best[d]], *g.group))
-            constrained.push_back(row);
+            x.second *= factors[d];
+          replaced[row] = {std::move(equation), factors[d] * values[best[d]]};
         }
+      // the node's frame if it carries a constraint (a rotated free node
+      // makes ML's point smoother weaker, measured on the 3-D sphere)
+      const auto        &dofs = g.group->displacements;
+      const unsigned int dim = dofs.size(), k = g.group->multipliers.size();
+      std::vector<bool>  constrained(dim, false);
+      std::vector<std::vector<double>> stiffness(dim), coefficients(dim);
+      for (unsigned int b = 0; b < dim; ++b)
+        for (unsigned int e = 0; e < dim; ++e)
+          {
+            stiffness[b].push_back(entry(g.rows[b], dofs[e]));
+            coefficients[b].push_back(entry(equations[b], dofs[e]));
+            constrained[b] =
+              b < k && is_constraint(matrix, g.group->multipliers[b], *g.group);
+          }
+      if (std::find(constrained.begin(), constrained.end(), true) !=
+          constrained.end())
+        frames.push_back(make_node_frame(dofs,
+                                         g.q,
+                                         stiffness,
+                                         coefficients,
+                                         best,
+                                         factors,
+                                         constrained));
     }
 
     /**
@@ -711,7 +731,7 @@ namespace ContactDynamics
 
     // 3. the condensed rows, 4. the other rows that change
     ReplacedRows replaced;
-    constrained.clear();
+    frames.clear();
     for (const auto &g : condensed)
       replace_group_rows(g,
                          matrix,
@@ -719,8 +739,7 @@ namespace ContactDynamics
                          all_condensed,
                          substitute,
                          replaced,
-                         constrained);
-    std::sort(constrained.begin(), constrained.end());
+                         frames);
     replace_other_rows(matrix, rhs, all_condensed, substitute, replaced);
 
     const bool fits = fits_pattern(matrix, replaced, copy_jacobian, comm);

@@ -204,7 +204,7 @@ namespace ContactDynamics
                                     linear_solver.wants_condensed_matrix());
             }
             TrilinosWrappers::MPI::Vector rhs(condensation.rhs());
-            linear_solver.set_constrained_rows(condensation.constrained_rows());
+            linear_solver.set_node_frames(condensation.node_frames());
             result.linear_iterations +=
               linear_solver.solve(condensation.matrix(),
                                   rhs,
@@ -214,6 +214,7 @@ namespace ContactDynamics
             condensation.recover(increment);
             return true;
           }
+        linear_solver.set_node_frames({});
         result.linear_iterations += linear_solver.solve(jacobian,
                                                         residual,
                                                         increment,

@@ -8,6 +8,7 @@
 
 #include <deal.II/base/types.h>
 
+#include <contact_dynamics/solvers/contact_frame_multigrid.h>
 #include <contact_dynamics/solvers/direct_factorization.h>
 #include <contact_dynamics/solvers/trilinos_forward.h>
 
@@ -75,16 +76,15 @@ namespace ContactDynamics
            const unsigned int  dim);
 
     /**
-     * AMG: the locally owned rows of the next (condensed) matrix that
-     * carry a contact constraint (MultiplierCondensation::constrained_rows()).
-     * With `AMG contact elimination`, the hierarchy is built on a copy of
-     * the matrix with their rows and columns reduced to the diagonal, and
-     * rebuilt when they change.
+     * AMG: the condensed nodes of the next (condensed) matrix in their
+     * frames (MultiplierCondensation::node_frames()). With `AMG contact
+     * elimination`, GMRES solves the system in these frames, preconditioned
+     * by ContactFrameMultigrid.
      */
     void
-    set_constrained_rows(const std::vector<types::global_dof_index> &rows)
+    set_node_frames(const std::vector<NodeFrame> &node_frames)
     {
-      constrained_rows = rows;
+      frames = node_frames;
     }
 
     /** The solver works best on a displacement-only (condensed) matrix. */
@@ -193,11 +193,18 @@ namespace ContactDynamics
     unsigned int                                       n_modes         = 0;
     unsigned int                                       dofs_per_vertex = 1;
     unsigned int iterations_after_build                                = 0;
-    bool         eliminate_constrained                                 = false;
-    // of the next matrix, and those the hierarchy was built with
-    std::vector<types::global_dof_index> constrained_rows, built_rows;
-    unsigned int                         amg_builds  = 0;
-    bool                                 rebuild_amg = false;
+    bool         eliminate_constrained                                 = true;
+    // of the next matrix; the multigrid in their frames
+    std::vector<NodeFrame>                 frames;
+    std::unique_ptr<ContactFrameMultigrid> frame_multigrid;
+    // GMRES failed in the frames even with a new hierarchy: until reset()
+    bool frames_failed = false;
+    unsigned int
+                 solve_in_frames(const TrilinosWrappers::SparseMatrix &matrix,
+                                 const TrilinosWrappers::MPI::Vector  &rhs,
+                                 TrilinosWrappers::MPI::Vector        &solution);
+    unsigned int amg_builds  = 0;
+    bool         rebuild_amg = false;
   };
 } // namespace ContactDynamics
 

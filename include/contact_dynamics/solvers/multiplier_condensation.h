@@ -9,6 +9,7 @@
 
 #include <deal.II/base/types.h>
 
+#include <contact_dynamics/solvers/contact_frame_multigrid.h>
 #include <contact_dynamics/solvers/trilinos_forward.h>
 
 #include <memory>
@@ -111,15 +112,17 @@ namespace ContactDynamics
     recover(TrilinosWrappers::MPI::Vector &solution) const;
 
     /**
-     * The locally owned displacement rows that carry a constraint after
-     * the last condense(), sorted: an active normal or a sticking
-     * tangential condition (the multiplier's row has no multiplier
-     * entries), placed on one of its node's rows.
+     * The condensed nodes of this process after the last condense(), each
+     * in the frame of its multiplier block B = Q R: the axes (columns of
+     * Q), its equations in that order scaled to the diagonal of the
+     * rotated stiffness, and which axes carry a constraint (an active
+     * normal or a sticking tangential condition: the multiplier's row has
+     * no multiplier entries).
      */
-    const std::vector<types::global_dof_index> &
-    constrained_rows() const
+    const std::vector<NodeFrame> &
+    node_frames() const
     {
-      return constrained;
+      return frames;
     }
 
     /** Multipliers eliminated in the last condense() (all processes). */
@@ -135,7 +138,7 @@ namespace ContactDynamics
     // dlambda_m = -e_m - F_m du for the owned condensed multipliers
     std::vector<internal::MultiplierElimination> eliminations;
     unsigned int                                 n_condensed_multipliers = 0;
-    std::vector<types::global_dof_index>         constrained;
+    std::vector<NodeFrame>                       frames;
   };
 } // namespace ContactDynamics
 

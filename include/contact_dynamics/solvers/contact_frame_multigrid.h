@@ -1,0 +1,137 @@
+// Algebraic multigrid for the condensed contact system in each secondary
+// node's frame (issue 40, item 2): the condensed system A x = b becomes
+// (L A T) y = L b, x = T y, with T rotating each condensed node's
+// displacements into the frame of its multiplier block B = Q R (normal,
+// then tangents) and L bringing the node's equations back into that order,
+// scaled to the rotated stiffness' diagonal. ML builds its hierarchy on a
+// copy whose constrained frame components (active normal, stick) are
+// removed from rows and columns, with rigid-body modes rotated alike; a
+// cycle is followed by the constraint rows, solved for their component
+// given the others (a block lower-triangular preconditioner). GMRES
+// solves the transformed system itself, so the Newton iterates are those of
+// the condensed system.
+#ifndef contact_dynamics_solvers_contact_frame_multigrid_h
+#define contact_dynamics_solvers_contact_frame_multigrid_h
+
+#include <deal.II/base/types.h>
+
+#include <contact_dynamics/solvers/trilinos_forward.h>
+
+#include <memory>
+#include <vector>
+
+namespace ContactDynamics
+{
+  using namespace dealii;
+
+  /**
+   * A condensed secondary node in its frame (MultiplierCondensation).
+   */
+  struct NodeFrame
+  {
+    // the node's displacement dofs (owned)
+    std::vector<types::global_dof_index> dofs;
+    // axes[b][d]: component d of the orthonormal frame axis b
+    std::vector<std::vector<double>> axes;
+    // frame equation b = sum_d to_frame[b][d] * (condensed row of dofs[d])
+    std::vector<std::vector<double>> to_frame;
+    // axis b carries a constraint (active normal, stick)
+    std::vector<bool> constrained;
+  };
+
+  /**
+   * The frame of a condensed node with displacement dofs `dofs`: q[d][b]
+   * is component d of axis b (B = Q R), stiffness[d][e] the Jacobian's
+   * entry in row dofs[d] and column dofs[e], coefficients[b][e] that of
+   * the node's equation b (axis order) at dofs[e]; equation placed[d] sits
+   * on row dofs[d] multiplied by factors[d]; `constrained` per equation.
+   * Each equation is scaled so that its coefficient on its own axis is
+   * the rotated stiffness |q_b^T K q_b|.
+   */
+  NodeFrame
+  make_node_frame(const std::vector<types::global_dof_index> &dofs,
+                  const std::vector<std::vector<double>>     &q,
+                  const std::vector<std::vector<double>>     &stiffness,
+                  const std::vector<std::vector<double>>     &coefficients,
+                  const std::vector<unsigned int>            &placed,
+                  const std::vector<double>                  &factors,
+                  const std::vector<bool>                    &constrained);
+
+  class ContactFrameMultigrid
+  {
+  public:
+    ContactFrameMultigrid();
+    ~ContactFrameMultigrid();
+
+    /**
+     * The transformed matrix L A T and right-hand side L b for the frames
+     * of the condensation that produced `matrix`. Collective.
+     */
+    void
+    transform(const TrilinosWrappers::SparseMatrix &matrix,
+              const TrilinosWrappers::MPI::Vector  &rhs,
+              const std::vector<NodeFrame>         &frames);
+
+    const TrilinosWrappers::SparseMatrix &
+    matrix() const;
+
+    const TrilinosWrappers::MPI::Vector &
+    rhs() const;
+
+    /** x = T y. */
+    void
+    back_transform(const TrilinosWrappers::MPI::Vector &y,
+                   TrilinosWrappers::MPI::Vector       &x) const;
+
+    /**
+     * Whether the constrained components differ from those of the
+     * hierarchy (or there is none). Collective.
+     */
+    bool
+    needs_build() const;
+
+    /**
+     * ML on the transformed matrix with the constrained components
+     * removed; `null_space`: n_modes vectors over the locally owned dofs,
+     * one after the other, rotated here.
+     */
+    void
+    build(const std::vector<double> &null_space,
+          const unsigned int         n_modes,
+          const unsigned int         dofs_per_vertex);
+
+    /** One cycle, then the constraint rows (the preconditioner). */
+    void
+    vmult(TrilinosWrappers::MPI::Vector       &dst,
+          const TrilinosWrappers::MPI::Vector &src) const;
+
+  private:
+    std::unique_ptr<TrilinosWrappers::SparseMatrix>    rotation, transformed;
+    std::unique_ptr<TrilinosWrappers::MPI::Vector>     transformed_rhs;
+    std::unique_ptr<TrilinosWrappers::SparseMatrix>    amg_matrix;
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+    std::unique_ptr<TrilinosWrappers::MPI::Vector>     residual;
+    // the owned constrained components, sorted, of the last transform()
+    // and of the hierarchy
+    std::vector<types::global_dof_index> constrained, built_constrained;
+    // their local indices and the transformed matrix's diagonal there
+    std::vector<unsigned int> constrained_local;
+    std::vector<double>       constrained_diagonal;
+    // frames of the last transform(), for the rotation of the modes
+    std::vector<NodeFrame> frames;
+  };
+
+  /**
+   * Sets up ML smoothed aggregation on `matrix` (Chebyshev, two sweeps),
+   * with `n_modes` near-null-space vectors over the locally owned dofs
+   * (one after the other) if there are.
+   */
+  void
+  initialize_amg(TrilinosWrappers::PreconditionAMG    &amg,
+                 const TrilinosWrappers::SparseMatrix &matrix,
+                 const std::vector<double>            &null_space,
+                 const unsigned int                    n_modes,
+                 const unsigned int                    dofs_per_vertex);
+} // namespace ContactDynamics
+
+#endif
