@@ -32,8 +32,9 @@ namespace ContactDynamics
     constexpr unsigned long umfpack_threshold = 20000;
     // 3-D (doc/solvers.md, 'Direct solvers by dimension'): KLU's fill
     // grows too fast, UMFPACK wins from the smallest scenes on, with METIS
-    // from about 50k unknowns on; AMG and UMFPACK cross near 80k there too
-    constexpr unsigned long metis_threshold_3d = 50000;
+    // from about 80k unknowns on (AMD is faster at 52k), where AMG and UMFPACK
+    // cross too
+    constexpr unsigned long metis_threshold_3d = 80000;
 
     const Selection<LinearSolver::Ordering> ordering_names{
       {LinearSolver::Ordering::automatic, "auto"},
@@ -77,7 +78,7 @@ namespace ContactDynamics
       "of at least 80,000 unknowns; below, in 2-D UMFPACK on one process "
       "from 20,000 unknowns and KLU otherwise, in 3-D UMFPACK on one "
       "process and MUMPS on several (KLU's fill grows too fast in 3-D: "
-      "3.7 times UMFPACK's time on the 16k 3-D ironing). The crossovers are "
+      "2.5 times UMFPACK's time on the 16k 3-D ironing). The crossovers are "
       "measured in doc/solvers.md; the run's log says which solver runs.");
     prm.declare_entry(
       "Linear tolerance",
@@ -106,7 +107,9 @@ namespace ContactDynamics
       "(doc/solvers.md): the 2-D ironing (34k unknowns, t in [0, 1]) needs "
       "20.7 instead of 44.0 GMRES iterations per Newton iteration (linear "
       "solve 0.69 of the time); the 3-D ironing (16k, indentation) 26.3 "
-      "instead of 28.0 (0.75).");
+      "instead of 28.0 (0.75). If GMRES fails in the frames even with a new "
+      "hierarchy (seen with 3-D friction), the run goes on with the plain "
+      "hierarchy.");
     prm.declare_entry(
       "Direct solver ordering",
       ordering_names.name(defaults.ordering),
@@ -114,9 +117,9 @@ namespace ContactDynamics
       "UMFPACK's fill-reducing ordering, which decides the fill of the "
       "factors and hence the cost of each factorization: AMD (approximate "
       "minimum degree) or METIS (nested dissection). auto: METIS in 3-D "
-      "from 50,000 unknowns, AMD otherwise. Measured on the 3-D ironing "
+      "from 80,000 unknowns, AMD otherwise. Measured on the 3-D ironing "
       "(doc/solvers.md, 'Direct solvers by dimension'): METIS needs 0.6 of "
-      "AMD's flops at 105k unknowns and 17 % less time per factorization "
+      "AMD's flops at 105k unknowns and 9 % less time per factorization "
       "and less memory for the factors; at 16k it takes as long (small "
       "fronts), in 2-D the two are within noise. KLU orders with AMD always.");
     prm.declare_entry("Maximum linear iterations",
