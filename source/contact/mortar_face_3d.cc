@@ -7,7 +7,6 @@
 
 #include <contact_dynamics/contact/contact_ad.h>
 #include <contact_dynamics/contact/mortar_face_3d.h>
-#include <contact_dynamics/contact/reverse_hessian.h>
 
 #include <algorithm>
 #include <map>
@@ -28,10 +27,6 @@ namespace ContactDynamics
       // (j <= k), from which the face's gaps follow (dual_sums()); with
       // `rates`, also R_m = sum N_m (v_rel . n) w (moments 18 to 21).
       constexpr unsigned int n_moments = 18, n_rate_moments = 22;
-
-      // the ring positions of a face's normals that fit on the stack (16
-      // nodes on a structured surface)
-      constexpr int ring_width = 60;
 
       // The velocities of a segment's nodes, constants to segment_moments():
       // they enter the rates linearly, with the coefficients dR_m / dv of the
@@ -463,163 +458,105 @@ namespace ContactDynamics
           }
       }
 
-      // The moments of a segment in its 36 variables (x of the secondary
-      // face, its nodal normals, x of the primary face): their gradients,
-      // and the Hessian of sum_q c_q moment_q only
-      struct SegmentSecondOrder
+      // Step (2) of exact_directions(): each covering segment's moments in its
+      // 36 variables, second order, with the maps of the variables to the
+      // positions, and the moments summed over the segments
+      void
+      segment_second_orders(
+        const Surface     &s,
+        const Surface     &p,
+        const unsigned int e,
+        const std::map<std::pair<const Surface *, unsigned int>, unsigned int>
+                                                &index,
+        const std::vector<unsigned int>         &covering,
+        const std::vector<double>               &position,
+        const std::array<Vec3<double>, 4>       &normal,
+        const std::vector<double>               &normal_gradient,
+        const unsigned int                       n_ring,
+        const TriangleRule                      &rule,
+        std::vector<SecondOrder<n_moments, 36>> &segments,
+        std::vector<VariableMap>                &maps,
+        std::array<double, n_moments>           &total)
       {
-        std::array<std::array<double, 36>, n_moments> gradient;
-        std::array<std::array<double, 36>, 36>        hessian;
-      };
-
-      // The covering segments' corners (their first positions in `is`,
-      // `ip`) and the maps of their variables to the positions
-      struct CoveringSegments
-      {
-        std::vector<std::array<Vec3<double>, 4>> xs, xm;
-        std::vector<VariableMap>                 maps;
-      };
-
-      CoveringSegments
-      covering_segments(const Surface                   &s,
-                        const Surface                   &p,
-                        const unsigned int               e,
-                        const std::map<std::pair<const Surface *, unsigned int>,
-                                       unsigned int>    &index,
-                        const std::vector<unsigned int> &covering,
-                        const std::vector<double>       &position,
-                        const std::vector<double>       &normal_gradient,
-                        const unsigned int               n_ring)
-      {
-        CoveringSegments            result;
-        std::array<unsigned int, 4> is, ip;
+        const auto            &face = s.faces[e];
+        constexpr unsigned int n_v  = 36;
+        using Segment2 = Sacado::Fad::SFad<Sacado::Fad::SFad<double, n_v>, n_v>;
+        total.fill(0.);
         for (const unsigned int pf : covering)
           {
-            result.xs.push_back(corners(index, s, e, position, is));
-            result.xm.push_back(corners(index, p, pf, position, ip));
-            result.maps.push_back(
-              variable_map(is, ip, normal_gradient, 3 * n_ring));
-          }
-        return result;
-      }
-
-      // Step (2) of exact_directions(): a segment's moments with their
-      // gradients, and the Hessian of sum_q c_q moment_q, by reverse over
-      // forward mode (reverse_hessian.h: 10 times faster here than a Fad of
-      // Fads, which gives the Hessian of every moment)
-      SegmentSecondOrder
-      segment_second_order(const std::array<Vec3<double>, 4>   &xs_d,
-                           const std::array<Vec3<double>, 4>   &normal,
-                           const std::array<Vec3<double>, 4>   &xm_d,
-                           const std::array<double, n_moments> &c,
-                           const TriangleRule                  &rule)
-      {
-        constexpr int n_v = 36;
-        using Inner       = Sacado::Fad::SFad<double, n_v>;
-        using Number      = ReverseHessian::Number<Inner>;
-        ReverseHessian::start<Inner>();
-        std::array<Vec3<Number>, 4> xs, ns, xm;
-        for (unsigned int a = 0; a < 4; ++a)
-          for (unsigned int d = 0; d < 3; ++d)
-            {
-              xs[a][d] = Number::independent(xs_d[a][d], 3 * a + d, n_v);
-              ns[a][d] = Number::independent(normal[a][d], 12 + 3 * a + d, n_v);
-              xm[a][d] = Number::independent(xm_d[a][d], 24 + 3 * a + d, n_v);
-            }
-        const auto moments =
-          segment_moments<Number, n_moments>(xs, ns, xm, rule);
-        SegmentSecondOrder result;
-        Number             weighted = 0.;
-        for (unsigned int q = 0; q < n_moments; ++q)
-          {
-            weighted += c[q] * moments[q];
-            for (int v = 0; v < n_v; ++v)
-              result.gradient[q][v] =
-                moments[q].index < 0 ? 0. : moments[q].value().dx(v);
-          }
-        const ReverseHessian::Sweep<Inner> sweep(weighted);
-        for (unsigned int a = 0; a < 4; ++a)
-          for (unsigned int d = 0; d < 3; ++d)
-            for (const auto &[k, x] :
-                 {std::make_pair(3 * a + d, xs[a][d]),
-                  std::make_pair(12 + 3 * a + d, ns[a][d]),
-                  std::make_pair(24 + 3 * a + d, xm[a][d])})
+            std::array<Vec3<Segment2>, 4> xs, ns, xm;
+            std::array<unsigned int, 4>   is, ip;
+            for (unsigned int a = 0; a < 4; ++a)
               {
-                const auto adjoint = sweep(x);
-                for (int l = 0; l < n_v; ++l)
-                  result.hessian[k][l] = adjoint.dx(l);
+                is[a] = index.at({&s, face[a]});
+                ip[a] = index.at({&p, p.faces[pf][a]});
+                for (unsigned int d = 0; d < 3; ++d)
+                  {
+                    xs[a][d] = seeded<n_v>(position[is[a] + d], 3 * a + d);
+                    ns[a][d] = seeded<n_v>(normal[a][d], 12 + 3 * a + d);
+                    xm[a][d] = seeded<n_v>(position[ip[a] + d], 24 + 3 * a + d);
+                  }
               }
-        return result;
+            const auto map = variable_map(is, ip, normal_gradient, 3 * n_ring);
+            segments.emplace_back();
+            segments.back().set(
+              segment_moments<Segment2, n_moments>(xs, ns, xm, rule));
+            for (unsigned int q = 0; q < n_moments; ++q)
+              total[q] += segments.back().value[q];
+            maps.push_back(map);
+          }
       }
 
       // G[q n_x + i] = d moment_q / dx_i of the summed moments, and into
       // `hessian` sum_q c_q d^2 moment_q / dx^2: chained through the maps,
       // plus the normals' own second derivatives
       void
-      add_moment_hessians(const SegmentSecondOrder            &seg,
-                          const VariableMap                   &map,
-                          const std::array<double, n_moments> &c,
-                          const unsigned int                   n_x,
-                          std::vector<double>                 &G,
-                          std::array<double, 12>              &normal_weight,
-                          std::vector<double>                 &hessian)
+      add_moment_hessians(
+        const std::vector<SecondOrder<n_moments, 36>> &segments,
+        const std::vector<VariableMap>                &maps,
+        const std::array<double, n_moments>           &c,
+        const std::vector<double>                     &normal_hessian,
+        const unsigned int                             n_ring,
+        const unsigned int                             n_x,
+        std::vector<double>                           &G,
+        std::vector<double>                           &hessian)
       {
         constexpr unsigned int n_v = 36;
-        for (unsigned int q = 0; q < n_moments; ++q)
-          for (unsigned int v = 0; v < n_v; ++v)
-            for (const auto &[i, y] : map[v])
-              G[q * n_x + i] += seg.gradient[q][v] * y;
-        for (unsigned int v = 0; v < n_v; ++v)
-          for (unsigned int w = 0; w < n_v; ++w)
-            if (const double h = seg.hessian[v][w]; h != 0)
-              for (const auto &[i, yi] : map[v])
-                for (const auto &[l, yl] : map[w])
-                  hessian[i * n_x + l] += h * yi * yl;
-        for (unsigned int v = 12; v < 24; ++v)
-          for (unsigned int q = 0; q < n_moments; ++q)
-            normal_weight[v - 12] += c[q] * seg.gradient[q][v];
-      }
-
-      // Adds sum_v weight_v d^2 n_v / dx^2 of the face's nodal normals n_v
-      // (component v % 3 of node v / 3) in the ring positions, by reverse
-      // over forward mode with Inner's first derivatives
-      template <typename Inner>
-      void
-      add_normal_hessian(const Surface                &s,
-                         const unsigned int            e,
-                         const PatchNodes             &nodes,
-                         const std::vector<double>    &position,
-                         const unsigned int            n_ring,
-                         const std::array<double, 12> &weight,
-                         std::vector<double>          &hessian)
-      {
-        using Number       = ReverseHessian::Number<Inner>;
-        const int      n   = 3 * n_ring;
-        const unsigned n_x = position.size();
-        ReverseHessian::start<Inner>();
-        NodeMap<Number>     ring;
-        std::vector<Number> inputs;
-        for (int i = 0; i < n; ++i)
+        for (unsigned int k = 0; k < segments.size(); ++k)
           {
-            inputs.push_back(Number::independent(position[i], i, n));
-            ring[nodes[i / 3].second][i % 3] = inputs.back();
-          }
-        Number weighted = 0.;
-        for (unsigned int a = 0; a < 4; ++a)
-          {
-            const auto normal = nodal_normal(s, s.faces[e][a], ring);
-            for (unsigned int c = 0; c < 3; ++c)
-              if (weight[3 * a + c] != 0)
-                weighted += weight[3 * a + c] * normal[c];
-          }
-        if (weighted.index < 0)
-          return;
-        const ReverseHessian::Sweep<Inner> sweep(weighted);
-        for (int i = 0; i < n; ++i)
-          {
-            const Inner adjoint = sweep(inputs[i]);
-            for (int l = 0; l < adjoint.size(); ++l)
-              hessian[i * n_x + l] += adjoint.dx(l);
+            const auto                              &seg = segments[k];
+            const auto                              &map = maps[k];
+            std::array<std::array<double, n_v>, n_v> h{};
+            for (unsigned int q = 0; q < n_moments; ++q)
+              for (unsigned int v = 0; v < n_v; ++v)
+                {
+                  for (const auto &[i, y] : map[v])
+                    G[q * n_x + i] += seg.gradient[q][v] * y;
+                  if (c[q] != 0)
+                    for (unsigned int w = 0; w < n_v; ++w)
+                      h[v][w] += c[q] * seg.hessian[q][v][w];
+                }
+            // sum_q c_q d^2 moment_q / dx^2: chained through the map, plus
+            // the normals' own second derivatives
+            for (unsigned int v = 0; v < n_v; ++v)
+              for (unsigned int w = 0; w < n_v; ++w)
+                if (h[v][w] != 0)
+                  for (const auto &[i, yi] : map[v])
+                    for (const auto &[l, yl] : map[w])
+                      hessian[i * n_x + l] += h[v][w] * yi * yl;
+            for (unsigned int v = 12; v < 24; ++v)
+              {
+                double weight = 0;
+                for (unsigned int q = 0; q < n_moments; ++q)
+                  weight += c[q] * seg.gradient[q][v];
+                if (weight != 0)
+                  for (unsigned int i = 0; i < 3 * n_ring; ++i)
+                    for (unsigned int l = 0; l < 3 * n_ring; ++l)
+                      hessian[i * n_x + l] +=
+                        weight * normal_hessian[((v - 12) * 3 * n_ring + i) *
+                                                  3 * n_ring +
+                                                l];
+              }
           }
       }
 
@@ -773,39 +710,37 @@ namespace ContactDynamics
       unsigned int n_ring = 0;
       const auto   index  = position_index(s, nodes, n_ring);
 
-      // (1) nodal normals in the ring positions (the first 3 n_ring), first
-      // order (their second derivatives follow in (5))
+      // (1) nodal normals in the ring positions (the first 3 n_ring)
       std::array<Vec3<double>, 4> normal;
-      std::vector<double>         normal_gradient, unused;
-      ContactAD::dispatch(3 * n_ring, [&](const auto zero) {
-        ring_normals<std::decay_t<decltype(zero)>>(s,
-                                                   e,
-                                                   nodes,
-                                                   position,
-                                                   normal,
-                                                   normal_gradient,
-                                                   unused);
-      });
+      std::vector<double>         normal_gradient, normal_hessian;
+      ring_normals<Sacado::Fad::DFad<Sacado::Fad::DFad<double>>>(
+        s,
+        e,
+        nodes,
+        position,
+        normal,
+        normal_gradient,
+        normal_hessian);
 
-      // (2) the moments summed over the covering segments, in double
-      const auto                    segs = covering_segments(s,
-                                          p,
-                                          e,
-                                          index,
-                                          covering,
-                                          position,
-                                          normal_gradient,
-                                          n_ring);
-      std::array<double, n_moments> total{};
-      for (unsigned int k = 0; k < covering.size(); ++k)
-        {
-          const auto m = segment_moments<double, n_moments>(segs.xs[k],
-                                                            normal,
-                                                            segs.xm[k],
-                                                            rule);
-          for (unsigned int q = 0; q < n_moments; ++q)
-            total[q] += m[q];
-        }
+      // (2) each segment's moments in its 36 variables; variable k is
+      // x_face (k < 12), the normals (12 <= k < 24) or x_primary, and
+      // maps to the positions by the sparse rows `map`
+      std::vector<SecondOrder<n_moments, 36>> segments;
+      std::vector<VariableMap>                maps;
+      std::array<double, n_moments>           total;
+      segment_second_orders(s,
+                            p,
+                            e,
+                            index,
+                            covering,
+                            position,
+                            normal,
+                            normal_gradient,
+                            n_ring,
+                            rule,
+                            segments,
+                            maps,
+                            total);
 
       // (3) the normalized gaps in the moments
       using Moments2 =
@@ -816,9 +751,8 @@ namespace ContactDynamics
       SecondOrder<4, n_moments> ratio;
       ratio.set(normalized_gaps(moments));
 
-      // (4) each segment's moments in its 36 variables (x of the face, its
-      // normals, x of the primary face), mapped to the positions; c_q
-      // weights the moments' Hessians, G[q n_x + i] = d moment_q / dx_i
+      // G[q][i] = d moment_q / dx_i; c_q weights the moments' Hessians
+      std::vector<double>           G(n_moments * n_x, 0.);
       std::array<double, n_moments> c;
       for (unsigned int q = 0; q < n_moments; ++q)
         {
@@ -826,37 +760,15 @@ namespace ContactDynamics
           for (unsigned int j = 0; j < 4; ++j)
             c[q] += lambda[j] * total[4 + j] * ratio.gradient[j][q];
         }
-      std::vector<double> G(n_moments * n_x, 0.);
       std::fill(hessian.begin(), hessian.end(), 0.);
-      std::array<double, 12> normal_weight{};
-      for (unsigned int k = 0; k < covering.size(); ++k)
-        add_moment_hessians(
-          segment_second_order(segs.xs[k], normal, segs.xm[k], c, rule),
-          segs.maps[k],
-          c,
-          n_x,
-          G,
-          normal_weight,
-          hessian);
-
-      // (5) the normals' own second derivatives, weighted
-      if (3 * n_ring <= ring_width)
-        add_normal_hessian<Sacado::Fad::SLFad<double, ring_width>>(
-          s,
-          e,
-          nodes,
-          position,
-          n_ring,
-          normal_weight,
-          hessian);
-      else
-        add_normal_hessian<Sacado::Fad::DFad<double>>(s,
-                                                      e,
-                                                      nodes,
-                                                      position,
-                                                      n_ring,
-                                                      normal_weight,
-                                                      hessian);
+      add_moment_hessians(segments,
+                          maps,
+                          c,
+                          normal_hessian,
+                          n_ring,
+                          n_x,
+                          G,
+                          hessian);
       add_gap_hessian(ratio, total, lambda, G, n_x, direction, hessian);
     }
   } // namespace MortarFace3D
