@@ -2,7 +2,7 @@
 """What the benchmark scripts share: one way to run a shipped parameter file
 with some entries changed, and one CSV reader.
 
-    from bench_common import write_prm, read_prm, read_csv
+    from bench_common import write_prm, read_prm, read_csv, run_measured
 
 Changed entries are never edited into the text of a parameter file: a
 wrapper file includes the original (deal.II's `include` directive) and then
@@ -23,8 +23,11 @@ The shell scripts use the same functions from the command line:
         print the named columns of the last complete row, comma-separated
 """
 import csv
+import os
 import re
+import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 _SUBSECTION = re.compile(r"^subsection\s+(.*?)\s*$")
@@ -186,6 +189,25 @@ def parse_run_log(log, sections):
             result["steps"] = int(m.group(1))
             result["newton"] = int(m.group(2))
     return result
+
+
+def run_measured(command):
+    """The screen output and the peak resident set (kB) of the largest
+    process of the run (wait4: the child and the descendants it waited
+    for, that is mpirun's ranks)."""
+    with tempfile.TemporaryFile("w+") as log:
+        env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
+                   OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+                   OMPI_MCA_rmaps_base_oversubscribe="1")
+        child = subprocess.Popen(command, stdout=log, env=env,
+                                 stderr=subprocess.STDOUT, text=True)
+        _, status, usage = os.wait4(child.pid, 0)
+        child.returncode = os.waitstatus_to_exitcode(status)
+        log.seek(0)
+        text = log.read()
+    if child.returncode != 0:
+        raise RuntimeError(f"{' '.join(command)} failed:\n{text[-2000:]}")
+    return text, usage.ru_maxrss
 
 
 def self_test():

@@ -25,11 +25,8 @@ and whole runs, with the peak resident memory of the largest process).
 """
 import argparse
 import csv
-import os
 import statistics
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -52,25 +49,6 @@ LONG = [(IRONING_3D, f, s, "auto", 1, "1")
         for f in ["1", "1.5"] for s in ["UMFPACK", "AMG"]]
 
 
-def run_measured(command):
-    """The screen output and the peak resident set (kB) of the largest
-    process of the run (wait4: the child and the descendants it waited
-    for, that is mpirun's ranks)."""
-    with tempfile.TemporaryFile("w+") as log:
-        env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-                   OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-                   OMPI_MCA_rmaps_base_oversubscribe="1")
-        child = subprocess.Popen(command, stdout=log, env=env,
-                                 stderr=subprocess.STDOUT, text=True)
-        _, status, usage = os.wait4(child.pid, 0)
-        child.returncode = os.waitstatus_to_exitcode(status)
-        log.seek(0)
-        text = log.read()
-    if child.returncode != 0:
-        raise RuntimeError(f"{' '.join(command)} failed:\n{text[-2000:]}")
-    return text, usage.ru_maxrss
-
-
 def run(exe, work, case, repeat):
     base, factor, solver, ordering, processes, end = case
     name = (f"{base.split('/')[-1][:-4]}_{factor}_{solver}_{ordering}_"
@@ -88,7 +66,7 @@ def run(exe, work, case, repeat):
     command = [exe, str(prm)]
     if processes > 1:
         command = ["mpirun", "-np", str(processes)] + command
-    log, peak = run_measured(command)
+    log, peak = bench_common.run_measured(command)
     times = bench_common.parse_run_log(log, ["linear solve", "setup"])
     return {"scene": f"{'3-D' if '3d' in base else '2-D'} ironing",
             "factor": factor, "unknowns": times.get("unknowns"),
