@@ -18,52 +18,40 @@ namespace ContactDynamics
   {
     namespace internal
     {
-      PositionIndex
-      position_index(const Surface    &s,
-                     const PatchNodes &nodes,
-                     unsigned int     &n_ring)
+      FaceRing
+      face_ring(const Surface             &s,
+                const unsigned int         e,
+                const PatchNodes          &nodes,
+                const std::vector<double> &position)
       {
-        PositionIndex index;
-        n_ring = 0;
+        FaceRing ring;
         for (unsigned int k = 0; k < nodes.size(); ++k)
           {
-            index[nodes[k]] = 3 * k;
-            n_ring += nodes[k].first == &s;
+            ring.index[nodes[k]] = 3 * k;
+            ring.n_ring += nodes[k].first == &s;
           }
-        return index;
-      }
-
-      void
-      ring_normals(const Surface               &s,
-                   const unsigned int           e,
-                   const PatchNodes            &nodes,
-                   const std::vector<double>   &position,
-                   std::array<Vec3<double>, 4> &normal,
-                   std::vector<double>         &gradient)
-      {
-        unsigned int n_ring = 0;
-        while (n_ring < nodes.size() && nodes[n_ring].first == &s)
-          ++n_ring;
-        const unsigned int n = 3 * n_ring;
+        // the ring comes first
+        const unsigned int n = 3 * ring.n_ring;
         ContactAD::dispatch(n, [&](const auto zero) {
           using AD = std::decay_t<decltype(zero)>;
-          NodeMap<AD> ring;
+          NodeMap<AD> positions;
           for (unsigned int i = 0; i < n; ++i)
-            ring[nodes[i / 3].second][i % 3] = AD(n, i, position[i]);
-          gradient.assign(12 * n, 0.);
+            positions[nodes[i / 3].second][i % 3] = AD(n, i, position[i]);
+          ring.normal_gradient.assign(12 * n, 0.);
           for (unsigned int a = 0; a < 4; ++a)
             {
-              const auto v = nodal_normal(s, s.faces[e][a], ring);
+              const auto v = nodal_normal(s, s.faces[e][a], positions);
               for (unsigned int c = 0; c < 3; ++c)
                 {
-                  normal[a][c] = value_of(v[c]);
+                  ring.normal[a][c] = value_of(v[c]);
                   for (int i = 0; i < v[c].size(); ++i)
-                    gradient[(3 * a + c) * n + i] = value_of(v[c].dx(i));
+                    ring.normal_gradient[(3 * a + c) * n + i] =
+                      value_of(v[c].dx(i));
                 }
             }
         });
+        return ring;
       }
-
 
       VariableMap
       variable_map(const std::array<unsigned int, 4> &secondary_index,
@@ -282,13 +270,9 @@ namespace ContactDynamics
                      const double                     minimum_fraction,
                      const TriangleRule              &rule)
     {
-      const unsigned int n_x    = position.size();
-      unsigned int       n_ring = 0;
-      const auto         index  = position_index(s, nodes, n_ring);
-
-      std::array<Vec3<double>, 4> normal;
-      std::vector<double>         normal_gradient;
-      ring_normals(s, e, nodes, position, normal, normal_gradient);
+      const unsigned int n_x = position.size();
+      const auto &[index, n_ring, normal, normal_gradient] =
+        face_ring(s, e, nodes, position);
       std::array<unsigned int, 4> is, ip;
       const auto                  xs_d = corners(index, s, e, position, is);
       FaceFirstOrder              result;

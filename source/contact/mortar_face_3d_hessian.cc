@@ -299,15 +299,11 @@ namespace ContactDynamics
                      std::vector<double>                &hessian)
     {
       const unsigned int n_x = position.size();
-      // the index of a node's first position in `position`
-      unsigned int n_ring = 0;
-      const auto   index  = position_index(s, nodes, n_ring);
-
-      // (1) nodal normals in the ring positions (the first 3 n_ring), first
-      // order (their second derivatives follow in (5))
-      std::array<Vec3<double>, 4> normal;
-      std::vector<double>         normal_gradient;
-      ring_normals(s, e, nodes, position, normal, normal_gradient);
+      // (1) where the nodes are in `position`, and the nodal normals in the
+      // ring positions (the first 3 n_ring), first order (their second
+      // derivatives follow in (5))
+      const auto &[index, n_ring, normal, normal_gradient] =
+        face_ring(s, e, nodes, position);
 
       // (2) the moments summed over the covering segments, in double
       const auto                    segs = covering_segments(s,

@@ -45,7 +45,7 @@ namespace ContactDynamics
       // the primary face's), with derivatives d_x[i]
       using Matrix = std::array<std::array<double, 4>, 4>;
       // the nodal normals, their derivatives in the ring positions (as in
-      // ring_normals()) and where the face's nodes are in the positions
+      // face_ring()) and where the face's nodes are in the positions
       std::array<Vec3<double>, 4> normal;
       std::vector<double>         normal_gradient;
       unsigned int                n_ring_positions = 0;

@@ -149,24 +149,24 @@ namespace ContactDynamics
       using PositionIndex =
         std::map<std::pair<const Surface *, unsigned int>, unsigned int>;
 
-      // the index of every node of `nodes`, and how many of them are
-      // secondary (the ring, which comes first)
-      PositionIndex
-      position_index(const Surface    &s,
-                     const PatchNodes &nodes,
-                     unsigned int     &n_ring);
+      // What a face reads of its patch: the index of every node of `nodes`,
+      // how many of them are secondary (the ring around the face, which
+      // comes first), and the face's nodal normals with their derivatives
+      // in the ring positions (the first 3 n_ring entries of `position`):
+      // normal_gradient[(3 a + c) 3 n_ring + i] of component c of node a's
+      struct FaceRing
+      {
+        PositionIndex               index;
+        unsigned int                n_ring = 0;
+        std::array<Vec3<double>, 4> normal;
+        std::vector<double>         normal_gradient;
+      };
 
-      // The nodal normals of face e and their derivatives in the positions of
-      // the ring of secondary nodes around it (the first 3 n_ring entries of
-      // `position`, in the order of `nodes`): gradient[(3 a + c) 3 n_ring + i]
-      // of component c of node a's normal.
-      void
-      ring_normals(const Surface               &s,
-                   const unsigned int           e,
-                   const PatchNodes            &nodes,
-                   const std::vector<double>   &position,
-                   std::array<Vec3<double>, 4> &normal,
-                   std::vector<double>         &gradient);
+      FaceRing
+      face_ring(const Surface             &s,
+                const unsigned int         e,
+                const PatchNodes          &nodes,
+                const std::vector<double> &position);
 
       // The sparse rows that map the 36 variables of a segment's moments
       // (x of the secondary face, its nodal normals, x of the primary face)
