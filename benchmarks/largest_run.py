@@ -3,7 +3,7 @@
 what 64 and 1024 processes would do, from its measured communication.
 
 Issue 40, item 5. Runs prm/ironing/mortar_3d_million.prm (the 3-D ironing
-refined to about 1.1 million unknowns, distributed mesh, AMG) under mpirun
+refined to 1,029,444 unknowns, distributed mesh, AMG) under mpirun
 with Open MPI's communication monitoring (`--mca pml_monitoring_enable 2`:
 bytes and messages per pair of processes, the application's own
 point-to-point messages (E) apart from those of the collectives (I)), once
@@ -13,7 +13,7 @@ is the volume per Newton iteration. Whole-run time split by TimerOutput
 section, peak resident memory of the largest process.
 
   python3 benchmarks/largest_run.py [--processes 2] [--prm FILE]
-      [--end T] [--skip-first-step-run]
+      [--end T] [--first-step T] [--table-only]
 
 Writes benchmarks/results/largest_run.csv (one row per run) and
 doc/largest-run-table.md (the runs, their split, the communication per
@@ -47,13 +47,14 @@ LARGE = 2 ** 24           # bytes: the contact node sums, not halos
 
 def communication(log):
     """Bytes and messages sent, summed over all pairs, per tag class; and
-    the bytes of the application's messages of at least LARGE bytes, from
-    the size histogram of each E line (bin k counts messages of 2^(k-1) to
-    2^k bytes: taken at 1.5 2^(k-1)). On the ironing these are the contact
-    node sums sent to the nodes' owners (SurfaceContact::exchange_node_sums,
-    found with gdb on the sends), not the halos."""
+    the bytes of the application's messages below LARGE bytes (the halos),
+    from the size histogram of each E line (bin k counts messages of
+    2^(k-1) to 2^k bytes: taken at 1.5 2^(k-1)). The rest of the E bytes
+    are the messages of LARGE bytes and more: on the ironing, the contact
+    node sums sent to the nodes' owner (SurfaceContact::exchange_node_sums,
+    found with gdb on the sends)."""
     total = {"E bytes": 0, "E msgs": 0, "I bytes": 0, "I msgs": 0,
-             "E large bytes": 0.}
+             "E small bytes": 0.}
     for line in log.splitlines():
         m = _LINE.match(line.strip())
         if not m:
@@ -63,9 +64,10 @@ def communication(log):
         fields = line.split("\t")
         if m.group(1) == "E" and len(fields) > 4 and "," in fields[-1]:
             counts = [int(c) for c in fields[-1].split(",") if c.strip()]
-            large = sum(c * 1.5 * 2 ** (k - 1) for k, c in enumerate(counts)
-                        if 2 ** (k - 1) >= LARGE)
-            total["E large bytes"] += min(large, int(m.group(4)))
+            small = sum(c * 1.5 * 2 ** (k - 1) for k, c in enumerate(counts)
+                        if 0 < k and 2 ** k <= LARGE)
+            total["E small bytes"] += min(small, int(m.group(4)))
+    total["E large bytes"] = total["E bytes"] - total["E small bytes"]
     return total
 
 
@@ -90,28 +92,36 @@ def run(args, work, end, name):
            "total s": t["total"], "peak MB": peak / 1024}
     row.update({f"{s} s": t.get(s, 0.) for s in SECTIONS})
     row.update(communication(log))
+    row["load"] = open("/proc/loadavg").read().split()[0]
     return row
 
 
 def estimate(full, first, processes):
-    """Per process and Newton iteration at 2, 64 and 1024 processes, from
-    the measured volume of the steps after the first. Point-to-point (the
-    halos of the matrix-vector products and of the multigrid levels):
-    bytes scale with a subdomain's surface, (n / P)^(2/3), and a box inside
-    the body has 26 neighbours and six faces where each half of the
-    2-process run has one. Collectives (dot products, the gathered contact
+    """Per Newton iteration at 2, 64 and 1024 processes, from the measured
+    volume of the steps after the first, for the busiest process.
+    Halos (the matrix-vector products and the multigrid levels): bytes per
+    process scale with a subdomain's surface, (n / P)^(2/3), and a box
+    inside the body has 26 neighbours and six faces where each half of the
+    2-process run has one. Contact node sums: the patches are computed in
+    equal shares by all processes and each patch's sums go to the owner of
+    its secondary nodes; today one process owns them all (the tool's cap
+    lies in one process's part), so it receives the sums of a fraction
+    (P - 1) / P of the patches, and their volume grows as the contact
+    surface, N^(2/3). Collectives (dot products, the gathered contact
     surfaces): as many as measured, each log2 P latencies deep; their bytes
     per process are the gathered surface, fixed in strong scaling and
-    growing as the body's surface, N^(2/3), in weak scaling."""
+    growing as N^(2/3) in weak scaling."""
     newton = full["newton"] - first["newton"]
     krylov = full["krylov"] - first["krylov"]
 
     def per_newton(key):
-        return (full[key] - first[key]) / newton / processes
-    contact_bytes = per_newton("E large bytes")
-    halo_bytes = per_newton("E bytes") - contact_bytes
-    p2p_msgs = per_newton("E msgs")
-    coll_bytes, coll_msgs = per_newton("I bytes"), per_newton("I msgs")
+        return (full[key] - first[key]) / newton
+    # all sums of one Newton iteration, of which (P - 1) / P were sent
+    sums = per_newton("E large bytes") * processes / (processes - 1)
+    halo_bytes = per_newton("E small bytes") / processes
+    p2p_msgs = per_newton("E msgs") / processes
+    coll_bytes = per_newton("I bytes") / processes
+    coll_msgs = per_newton("I msgs") / processes
     # wall time per Newton iteration on `processes`
     compute = (full["Newton solve s"] - first["Newton solve s"]) / newton
     n = full["unknowns"]
@@ -122,17 +132,16 @@ def estimate(full, first, processes):
                                ("weak", n / processes * 1024, 1024)]:
         surface = ((unknowns / p) / (n / processes)) ** (2 / 3)
         faces = 1 if p == processes else 6
-        # the contact surface grows as N^(2/3) and is shared by P
-        contact = (contact_bytes * (unknowns / n) ** (2 / 3) * processes
-                   / p)
-        b = halo_bytes * surface * faces + contact
+        halo = halo_bytes * surface * faces
+        contact = sums * (unknowns / n) ** (2 / 3) * (p - 1) / p
         m = p2p_msgs * (1 if p == processes else NEIGHBOURS_3D)
         c = coll_msgs * math.log2(p) / math.log2(processes)
         cb = coll_bytes * (unknowns / n) ** (2 / 3)
         t_comp = compute * (unknowns / p) / (n / processes)
-        t_comm = (m + c) * LATENCY_S + (b + cb) / BANDWIDTH_B_PER_S
+        t_comm = ((m + c) * LATENCY_S
+                  + (halo + contact + cb) / BANDWIDTH_B_PER_S)
         rows.append({"case": label, "processes": p, "unknowns": unknowns,
-                     "per process": unknowns / p, "bytes": b,
+                     "per process": unknowns / p, "halo bytes": halo,
                      "contact bytes": contact,
                      "collective bytes": cb, "p2p msgs": m,
                      "collective msgs": c, "compute s": t_comp,
@@ -143,11 +152,12 @@ def estimate(full, first, processes):
 
 def table(full, first, processes):
     newton, krylov, est = estimate(full, first, processes)
-    load = open("/proc/loadavg").read().split()[0]
+    load = full.get("load", "")
     out = ["<!-- generated by benchmarks/largest_run.py; do not edit -->", "",
-           f"One run each, {processes} processes on 2 cores, load average at"
-           f" the end {load}. Peak memory: resident set of the largest"
-           " process.", "",
+           f"One run each (not a median: the full run takes 13 minutes),"
+           f" {processes} processes on 2 cores"
+           + (f", load average at the end {load}" if load else "") +
+           ". Peak memory: resident set of the largest process.", "",
            "| run | unknowns | steps | Newton its | Krylov its | whole run (s)"
            " | setup | initial conditions | bulk assembly | contact search +"
            " assembly | linear solve | output | peak memory per process"
@@ -165,18 +175,20 @@ def table(full, first, processes):
     out += ["", f"Steps 2 to {full['steps']} (the difference of the runs):"
             f" {newton} Newton iterations, {krylov} Krylov iterations"
             f" ({krylov / newton:.1f} per Newton iteration).", "",
-            "Per process and Newton iteration:", "",
-            "| case | processes | unknowns | per process | point-to-point"
-            " bytes (of which contact node sums) | point-to-point messages |"
+            "Per Newton iteration, for the busiest process (the owner of"
+            " the secondary nodes, which receives the contact node sums):",
+            "",
+            "| case | processes | unknowns | per process | halo bytes |"
+            " contact node sums received (bytes) | point-to-point messages |"
             " collective bytes |"
             " collective messages | compute (s) | communication (s) |"
             " communication share |",
-            "|---|---|---|---|---|---|---|---|---|---|---|"]
+            "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for e in est:
         out.append(
             f"| {e['case']} | {e['processes']} | {e['unknowns']:.3g} |"
-            f" {e['per process']:.3g} | {e['bytes']:.3g}"
-            f" ({e['contact bytes']:.3g}) |"
+            f" {e['per process']:.3g} | {e['halo bytes']:.3g} |"
+            f" {e['contact bytes']:.3g} |"
             f" {e['p2p msgs']:.0f} | {e['collective bytes']:.3g} |"
             f" {e['collective msgs']:.0f} |"
             f" {e['compute s']:.3g} | {e['communication s']:.3g} |"
@@ -205,7 +217,7 @@ def main(argv):
     results = REPO / "benchmarks/results/largest_run.csv"
     if args.table_only:
         with open(results) as f:
-            rows = [{k: (v if k == "run" else float(v)) for k, v in r.items()}
+            rows = [{k: (v if k in ("run", "load") else float(v)) for k, v in r.items()}
                     for r in csv.DictReader(f)]
         work = REPO / "benchmarks/results/largest_run"
         for r in rows:
