@@ -12,7 +12,12 @@
 //    there is a singular matrix;
 // 4. a singular matrix is reported as singular by both;
 // 5. UMFPACK with METIS ordering is exact and fills less than with AMD on
-//    a 3-D grid.
+//    a 3-D grid;
+// 6. explicit zeros in the pattern (contact couplings out of contact) are
+//    not factorized if asked (3-D): a coupling switched on costs one new
+//    analysis and switched off again none, the solutions exact; without
+//    the option one analysis; the 3-D grid with a wider pattern of zeros
+//    fills exactly as the grid alone.
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -158,14 +163,64 @@ main()
       zero_row.compress(VectorOperation::insert);
       check_true(name + ": a zero decoupled row is reported as singular",
                  !nonzero_singular && singular(zero_row));
+
+      // 6. a tridiagonal matrix in a full pattern, then the same pattern
+      //    with the corner coupling switched on and off
+      std::vector<std::vector<double>> rows(8, std::vector<double>(8, 0.));
+      for (unsigned int i = 0; i < 8; ++i)
+        {
+          rows[i][i] = 4;
+          if (i > 0)
+            rows[i][i - 1] = rows[i - 1][i] = -1;
+        }
+      const std::vector<double> exact8{1, -2, 3, -4, 5, -6, 7, -8};
+      DirectFactorization       zeros(method), all(method);
+      zeros.set_skip_zeros(true);
+      check_close(name + ": explicit zeros, |x - exact|_max",
+                  error(zeros, matrix(rows), exact8),
+                  0,
+                  1e-14);
+      rows[0][7] = rows[7][0] = -1.5;
+      check_close(name + ": a zero entry switched on, |x - exact|_max",
+                  error(zeros, matrix(rows), exact8),
+                  0,
+                  1e-14);
+      const unsigned int analyses = zeros.n_symbolic_analyses();
+      rows[0][7] = rows[7][0] = 0;
+      check_close(name + ": and off again, |x - exact|_max",
+                  error(zeros, matrix(rows), exact8),
+                  0,
+                  1e-14);
+      check_true(name + ": switched on it costs an analysis, off none",
+                 analyses == 2 && zeros.n_symbolic_analyses() == 2);
+      // by default every stored entry is factorized: one analysis, also
+      // when a zero entry switches on
+      check_close(name + ": all entries, zeros stored, |x - exact|_max",
+                  error(all, matrix(rows), exact8),
+                  0,
+                  1e-14);
+      rows[0][7] = rows[7][0] = -1.5;
+      check_close(name + ": all entries, one switched on, |x - exact|_max",
+                  error(all, matrix(rows), exact8),
+                  0,
+                  1e-14);
+      check_true(name + ": all entries stored, one analysis",
+                 all.n_symbolic_analyses() == 1);
+      // switching the option forgets the analysis
+      zeros.set_skip_zeros(false);
+      check_close(name + ": option switched off, |x - exact|_max",
+                  error(zeros, matrix(rows), exact8),
+                  0,
+                  1e-14);
+      check_true(name + ": option switched off, a new analysis",
+                 zeros.n_symbolic_analyses() == 3);
     }
 
   // 5. UMFPACK's orderings on a 3-D grid (7-point stencil with a
   //    nonsymmetric convection part): both exact, and nested dissection
   //    (METIS) fills less than minimum degree (AMD), the separator theorem
   //    of George (1973) for grids
-  const unsigned int     m = 24, n = m * m * m;
-  DynamicSparsityPattern dsp(n, n);
+  const unsigned int m = 24, n = m * m * m;
   const auto             index = [&](const int i, const int j, const int k) {
     return (i * m + j) * m + k;
   };
@@ -190,16 +245,29 @@ main()
                                        -1. + 0.2 * s);
               }
         }
+  // the grid in its own pattern, and in one that also couples every point
+  // to its neighbours' neighbours (held zero)
+  std::vector<std::vector<unsigned int>> neighbours(n);
   for (const auto &[r, c, v] : entries)
-    dsp.add(r, c);
-  TrilinosWrappers::SparseMatrix grid;
-  grid.reinit(complete_index_set(n),
-              complete_index_set(n),
-              dsp,
-              MPI_COMM_WORLD);
-  for (const auto &[r, c, v] : entries)
-    grid.set(r, c, v);
-  grid.compress(VectorOperation::insert);
+    neighbours[r].push_back(c);
+  const auto grid_matrix = [&](const bool wide) {
+    DynamicSparsityPattern dsp(n, n);
+    for (unsigned int r = 0; r < n; ++r)
+      for (const auto c : neighbours[r])
+        {
+          dsp.add(r, c);
+          if (wide)
+            for (const auto c2 : neighbours[c])
+              dsp.add(r, c2);
+        }
+    TrilinosWrappers::SparseMatrix a;
+    a.reinit(complete_index_set(n), complete_index_set(n), dsp, MPI_COMM_WORLD);
+    for (const auto &[r, c, v] : entries)
+      a.set(r, c, v);
+    a.compress(VectorOperation::insert);
+    return a;
+  };
+  const auto grid = grid_matrix(false);
   std::vector<double> exact(n);
   for (unsigned int i = 0; i < n; ++i)
     exact[i] = std::sin(0.1 * i);
@@ -222,4 +290,14 @@ main()
             << entries_of[1] / entries_of[0] << std::endl;
   check_true("UMFPACK: METIS fills less than AMD on a 3-D grid",
              entries_of[1] < 0.9 * entries_of[0]);
+  DirectFactorization wide(DirectFactorization::Method::umfpack);
+  wide.set_ordering(DirectFactorization::Ordering::metis);
+  wide.set_skip_zeros(true);
+  check_close("UMFPACK with METIS: the grid in a wider pattern of zeros, "
+              "|x - exact|_max",
+              error(wide, grid_matrix(true), exact),
+              0,
+              1e-12);
+  check_true("UMFPACK: the zeros add no entries to L and U",
+             wide.n_entries_of_factors() == entries_of[1]);
 }

@@ -38,6 +38,9 @@ namespace ContactDynamics
     free_symbolic();
     row_start.clear();
     columns.clear();
+    matrix_start.clear();
+    matrix_columns.clear();
+    position.clear();
   }
 
   void
@@ -46,6 +49,14 @@ namespace ContactDynamics
     if (new_ordering != ordering)
       clear();
     ordering = new_ordering;
+  }
+
+  void
+  DirectFactorization::set_skip_zeros(const bool skip)
+  {
+    if (skip != skip_zeros)
+      clear();
+    skip_zeros = skip;
   }
 
   void
@@ -96,13 +107,13 @@ namespace ContactDynamics
     const bool contiguous =
       A.ExtractCrsDataPointers(offsets, indices, epetra_values) == 0;
     const bool same_pattern =
-      contiguous && symbolic != nullptr &&
+      contiguous && !matrix_start.empty() &&
       epetra_offsets.size() == static_cast<std::size_t>(n) + 1 &&
       std::equal(offsets, offsets + n + 1, epetra_offsets.begin()) &&
       std::equal(indices, indices + offsets[n], epetra_columns.begin());
     if (same_pattern)
-      for (std::size_t k = 0; k < values.size(); ++k)
-        values[k] = epetra_values[source[k]];
+      for (std::size_t k = 0; k < matrix_values.size(); ++k)
+        matrix_values[k] = epetra_values[source[k]];
     else
       {
         // the rows in global numbering with sorted columns (removing the
@@ -113,7 +124,7 @@ namespace ContactDynamics
         epetra_offsets.clear();
         std::vector<std::int64_t> new_start(n + 1, 0), new_columns;
         new_columns.reserve(A.NumMyNonzeros());
-        values.clear();
+        matrix_values.clear();
         source.clear();
         std::vector<std::pair<std::int64_t, int>> row;
         for (int r = 0; r < n; ++r)
@@ -130,30 +141,78 @@ namespace ContactDynamics
             for (const auto &[column, k] : row)
               {
                 new_columns.push_back(column);
-                values.push_back(row_values[k]);
+                matrix_values.push_back(row_values[k]);
                 source.push_back(contiguous ? offsets[r] + k : 0);
               }
             new_start[r + 1] = new_columns.size();
+          }
+        if (new_start != matrix_start || new_columns != matrix_columns)
+          {
+            // (an analysis exists only with the positions of its pattern)
+            position.clear();
+            free_numeric();
+            free_symbolic();
+            matrix_start.swap(new_start);
+            matrix_columns.swap(new_columns);
           }
         if (contiguous)
           {
             epetra_offsets.assign(offsets, offsets + n + 1);
             epetra_columns.assign(indices, indices + offsets[n]);
           }
-        if (symbolic == nullptr || new_start != row_start ||
-            new_columns != columns)
-          {
-            free_numeric();
-            free_symbolic();
-            row_start.swap(new_start);
-            columns.swap(new_columns);
-          }
       }
-    const bool new_pattern = symbolic == nullptr;
+    const bool new_pattern = !select_entries();
     if (method == Method::umfpack)
       factorize_umfpack(new_pattern);
     else
       factorize_klu(new_pattern);
+  }
+
+  bool
+  DirectFactorization::select_entries()
+  {
+    // With skip_zeros the analysed pattern holds the entries that were
+    // nonzero when it was made: the contact pattern of the matrix couples
+    // every candidate patch in full, in or out of contact (62 % of the
+    // entries of the 3-D ironing, issue 40), and a factorization of those
+    // zeros costs their fill-in. While the nonzeros stay inside it the
+    // analysis is kept.
+    if (symbolic != nullptr && position.size() == matrix_values.size())
+      {
+        std::fill(values.begin(), values.end(), 0.);
+        bool inside = true;
+        for (std::size_t k = 0; inside && k < matrix_values.size(); ++k)
+          if (matrix_values[k] != 0)
+            {
+              inside = position[k] != invalid_position;
+              if (inside)
+                values[position[k]] = matrix_values[k];
+            }
+        if (inside)
+          return true;
+      }
+    free_numeric();
+    free_symbolic();
+    position.assign(matrix_values.size(), invalid_position);
+    const std::size_t n = matrix_start.size() - 1;
+    row_start.assign(n + 1, 0);
+    columns.clear();
+    values.clear();
+    for (std::size_t r = 0; r < n; ++r)
+      {
+        for (auto k = matrix_start[r]; k < matrix_start[r + 1]; ++k)
+          // (the diagonal always, zero or not: a diagonal that switches
+          // between zero and nonzero would cost analyses)
+          if (!skip_zeros || matrix_values[k] != 0 ||
+              matrix_columns[k] == static_cast<std::int64_t>(r))
+            {
+              position[k] = columns.size();
+              columns.push_back(matrix_columns[k]);
+              values.push_back(matrix_values[k]);
+            }
+        row_start[r + 1] = columns.size();
+      }
+    return false;
   }
 
   void
