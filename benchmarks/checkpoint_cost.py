@@ -44,8 +44,10 @@ CASES = [
      {"Time integration/End time": "0.5"}, 50, [0, 10, 1]),
     ("ironing 2-D, adaptive mesh", "prm/ironing/mortar_adaptive.prm",
      {"Time integration/End time": "0.5"}, 50, [0, 10, 1]),
+    # (the direct solver it was measured with; the shipped file takes AMG)
     ("bouncing block 3-D (mortar)", "prm/bouncing_block/mortar_3d.prm",
-     {"Time integration/End time": "0.2"}, 8, [0, 2]),
+     {"Time integration/End time": "0.2",
+      "Nonlinear solver/Linear solver": "auto"}, 8, [0, 2]),
 ]
 
 

@@ -44,7 +44,9 @@ namespace
                              {"Scene/Bouncing block/Depth elements", "2"},
                              {"Time integration/End time", "3.6"},
                              {"Output/Output directory", directory},
-                             {"Output/VTU interval", "0"}};
+                             {"Output/VTU interval", "0"},
+                             // (direct at this size, as the 2-D runs)
+                             {"Nonlinear solver/Linear solver", "auto"}};
     if (stabilization == "nts")
       changes.insert(changes.end(),
                      {{"Contact/Formulation", "nts"},

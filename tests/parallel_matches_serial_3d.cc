@@ -29,7 +29,8 @@ main()
              "prm/bouncing_block/mortar_3d.prm",
              {{"Scene/Refinement factor", "0.5"},
               {"Scene/Bouncing block/Depth elements", "2"},
-              {"Time integration/End time", "1"}});
+              {"Time integration/End time", "1"},
+              {"Nonlinear solver/Linear solver", "auto"}});
   // node-to-segment with smoothed normals and friction, sliding
   compare<3>("patch_test_3d_nts_friction",
              "prm/examples/patch_test_3d.prm",
