@@ -179,6 +179,12 @@ namespace ContactDynamics
     // analysis is kept.
     if (symbolic != nullptr && position.size() == matrix_values.size())
       {
+        // (every entry analysed: the positions are the identity)
+        if (!skip_zeros)
+          {
+            values = matrix_values;
+            return true;
+          }
         std::fill(values.begin(), values.end(), 0.);
         bool inside = true;
         for (std::size_t k = 0; inside && k < matrix_values.size(); ++k)
