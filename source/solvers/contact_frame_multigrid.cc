@@ -87,6 +87,217 @@ namespace ContactDynamics
           m.set(i, i, 1.);
       m.compress(VectorOperation::insert);
     }
+
+    // Every process's frames: the dofs (dim per frame) and the axes
+    // (dim x dim per frame, row c = axis c). Collective.
+    void
+    gather_frames(const std::vector<NodeFrame> &frames,
+                  const MPI_Comm                comm,
+                  std::vector<Index>           &dofs,
+                  std::vector<double>          &axes)
+    {
+      std::vector<Index>  own_dofs;
+      std::vector<double> own_axes;
+      for (const auto &f : frames)
+        {
+          own_dofs.insert(own_dofs.end(), f.dofs.begin(), f.dofs.end());
+          for (const auto &axis : f.axes)
+            own_axes.insert(own_axes.end(), axis.begin(), axis.end());
+        }
+      dofs.clear();
+      axes.clear();
+      for (const auto &part : Utilities::MPI::all_gather(comm, own_dofs))
+        dofs.insert(dofs.end(), part.begin(), part.end());
+      for (const auto &part : Utilities::MPI::all_gather(comm, own_axes))
+        axes.insert(axes.end(), part.begin(), part.end());
+    }
+
+    // A T in place: in every row, the entries in the columns of a frame
+    // rotated (column j of a frame = sum_i column i * axes[j][i]). False
+    // if a row holds only some of a frame's columns (the pattern has no
+    // room for the product).
+    bool
+    rotate_columns(Epetra_CrsMatrix          &a,
+                   const std::vector<Index>  &dofs,
+                   const std::vector<double> &axes,
+                   const unsigned int         dim)
+    {
+      // local column -> frame * dim + component
+      std::vector<int> slot(a.NumMyCols(), -1);
+      for (unsigned int k = 0; k < dofs.size(); ++k)
+        {
+          const int column = a.LCID(static_cast<int>(dofs[k]));
+          if (column >= 0)
+            slot[column] = k;
+        }
+      std::vector<std::pair<int, int>> found; // (slot, position)
+      std::vector<double>              old(dim);
+      for (int r = 0; r < a.NumMyRows(); ++r)
+        {
+          int     n       = 0;
+          double *values  = nullptr;
+          int    *indices = nullptr;
+          a.ExtractMyRowView(r, n, values, indices);
+          found.clear();
+          for (int k = 0; k < n; ++k)
+            if (slot[indices[k]] >= 0)
+              found.emplace_back(slot[indices[k]], k);
+          if (found.empty())
+            continue;
+          if (found.size() % dim != 0)
+            return false;
+          std::sort(found.begin(), found.end());
+          for (unsigned int g = 0; g < found.size(); g += dim)
+            {
+              const int frame = found[g].first / dim;
+              for (unsigned int i = 0; i < dim; ++i)
+                {
+                  if (found[g + i].first != int(frame * dim + i))
+                    return false;
+                  old[i] = values[found[g + i].second];
+                }
+              const double *q = axes.data() + frame * dim * dim;
+              for (unsigned int j = 0; j < dim; ++j)
+                {
+                  double value = 0;
+                  for (unsigned int i = 0; i < dim; ++i)
+                    value += old[i] * q[j * dim + i];
+                  values[found[g + j].second] = value;
+                }
+            }
+        }
+      return true;
+    }
+
+    // L A in place for the locally owned frames: row c of a frame =
+    // sum_d to_frame[c][d] * row d. False unless a frame's rows share
+    // their columns.
+    bool
+    combine_rows(Epetra_CrsMatrix &a, const std::vector<NodeFrame> &frames)
+    {
+      for (const auto &f : frames)
+        {
+          const unsigned int    dim = f.dofs.size();
+          std::vector<double *> rows(dim);
+          int                   n             = -1;
+          int                  *first_indices = nullptr;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              int       m       = 0;
+              int      *indices = nullptr;
+              const int row     = a.LRID(static_cast<int>(f.dofs[d]));
+              if (row < 0)
+                return false;
+              a.ExtractMyRowView(row, m, rows[d], indices);
+              if (d == 0)
+                {
+                  n             = m;
+                  first_indices = indices;
+                }
+              else if (m != n ||
+                       !std::equal(indices, indices + m, first_indices))
+                return false;
+            }
+          std::vector<double> old(dim);
+          for (int k = 0; k < n; ++k)
+            {
+              for (unsigned int d = 0; d < dim; ++d)
+                old[d] = rows[d][k];
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  double value = 0;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    value += f.to_frame[c][d] * old[d];
+                  rows[c][k] = value;
+                }
+            }
+        }
+      return true;
+    }
+
+    // The entries of `full` that are nonzero or on the diagonal, into
+    // `compact` (same row and column maps): the contact pattern reserves
+    // couplings that are zero most of the time, and ML and GMRES pay for
+    // every stored entry. Its pattern is rebuilt only when a nonzero
+    // falls outside it. Collective.
+    void
+    copy_nonzeros(const Epetra_CrsMatrix         &full,
+                  TrilinosWrappers::SparseMatrix &compact,
+                  const MPI_Comm                  comm)
+    {
+      bool fits =
+        compact.m() == static_cast<unsigned int>(full.NumGlobalRows()) &&
+        compact.trilinos_matrix().RowMap().SameAs(full.RowMap()) &&
+        compact.trilinos_matrix().ColMap().SameAs(full.ColMap());
+      if (fits)
+        {
+          Epetra_CrsMatrix &c =
+            const_cast<Epetra_CrsMatrix &>(compact.trilinos_matrix());
+          for (int r = 0; r < full.NumMyRows() && fits; ++r)
+            {
+              int     n = 0, m = 0;
+              double *v = nullptr, *cv = nullptr;
+              int    *idx = nullptr, *cidx = nullptr;
+              full.ExtractMyRowView(r, n, v, idx);
+              c.ExtractMyRowView(r, m, cv, cidx);
+              int j = 0;
+              for (int k = 0; k < n; ++k)
+                {
+                  while (j < m && cidx[j] < idx[k])
+                    cv[j++] = 0;
+                  if (j < m && cidx[j] == idx[k])
+                    cv[j++] = v[k];
+                  else if (v[k] != 0)
+                    {
+                      fits = false;
+                      break;
+                    }
+                }
+              while (j < m)
+                cv[j++] = 0;
+            }
+        }
+      if (Utilities::MPI::min(int(fits), comm) == 1)
+        return;
+      std::vector<int> counts(full.NumMyRows(), 0);
+      for (int r = 0; r < full.NumMyRows(); ++r)
+        {
+          int     n   = 0;
+          double *v   = nullptr;
+          int    *idx = nullptr;
+          full.ExtractMyRowView(r, n, v, idx);
+          for (int k = 0; k < n; ++k)
+            counts[r] += (v[k] != 0 || full.GCID(idx[k]) == full.GRID(r));
+        }
+      Epetra_CrsMatrix    reduced(Copy,
+                               full.RowMap(),
+                               full.ColMap(),
+                               counts.data(),
+                               true);
+      std::vector<int>    columns;
+      std::vector<double> values;
+      for (int r = 0; r < full.NumMyRows(); ++r)
+        {
+          int     n   = 0;
+          double *v   = nullptr;
+          int    *idx = nullptr;
+          full.ExtractMyRowView(r, n, v, idx);
+          columns.clear();
+          values.clear();
+          for (int k = 0; k < n; ++k)
+            if (v[k] != 0 || full.GCID(idx[k]) == full.GRID(r))
+              {
+                columns.push_back(idx[k]);
+                values.push_back(v[k]);
+              }
+          reduced.InsertMyValues(r,
+                                 columns.size(),
+                                 values.data(),
+                                 columns.data());
+        }
+      reduced.FillComplete(full.DomainMap(), full.RangeMap());
+      compact.reinit(reduced, true);
+    }
   } // namespace
 
   NodeFrame
@@ -153,6 +364,7 @@ namespace ContactDynamics
   ContactFrameMultigrid::ContactFrameMultigrid()
     : rotation(std::make_unique<TrilinosWrappers::SparseMatrix>())
     , transformed(std::make_unique<TrilinosWrappers::SparseMatrix>())
+    , compact(std::make_unique<TrilinosWrappers::SparseMatrix>())
     , transformed_rhs(std::make_unique<TrilinosWrappers::MPI::Vector>())
     , residual(std::make_unique<TrilinosWrappers::MPI::Vector>())
   {}
@@ -162,7 +374,7 @@ namespace ContactDynamics
   const TrilinosWrappers::SparseMatrix &
   ContactFrameMultigrid::matrix() const
   {
-    return *transformed;
+    return in_place ? *compact : *transformed;
   }
 
   const TrilinosWrappers::MPI::Vector &
@@ -179,25 +391,54 @@ namespace ContactDynamics
     frames                = new_frames;
     const IndexSet &owned = b.locally_owned_elements();
     const MPI_Comm  comm  = b.get_mpi_communicator();
-    frame_block_matrix(*rotation,
-                       owned,
-                       comm,
-                       frames,
-                       [](const NodeFrame &f, unsigned int d, unsigned int c) {
-                         return f.axes[c][d];
-                       });
-    TrilinosWrappers::SparseMatrix to_frame, la;
-    frame_block_matrix(to_frame,
-                       owned,
-                       comm,
-                       frames,
-                       [](const NodeFrame &f, unsigned int c, unsigned int d) {
-                         return f.to_frame[c][d];
-                       });
-    to_frame.mmult(la, a);
-    la.mmult(*transformed, *rotation);
+
+    // in the Jacobian's own pattern where each row holds all or none of a
+    // node's columns (Q1 couplings); else as sparse products
+    std::vector<Index>  all_dofs;
+    std::vector<double> all_axes;
+    gather_frames(frames, comm, all_dofs, all_axes);
+    transformed->copy_from(a);
+    Epetra_CrsMatrix &m =
+      const_cast<Epetra_CrsMatrix &>(transformed->trilinos_matrix());
+    const unsigned int dim =
+      all_dofs.empty() ? 1 : all_axes.size() / all_dofs.size();
+    in_place =
+      Utilities::MPI::min(int(rotate_columns(m, all_dofs, all_axes, dim) &&
+                              combine_rows(m, frames)),
+                          comm) == 1;
+    if (!in_place)
+      {
+        frame_block_matrix(*rotation,
+                           owned,
+                           comm,
+                           frames,
+                           [](const NodeFrame &f,
+                              unsigned int     d,
+                              unsigned int     c) {
+                             return f.axes[c][d];
+                           });
+        TrilinosWrappers::SparseMatrix to_frame, la;
+        frame_block_matrix(to_frame,
+                           owned,
+                           comm,
+                           frames,
+                           [](const NodeFrame &f,
+                              unsigned int     c,
+                              unsigned int     d) {
+                             return f.to_frame[c][d];
+                           });
+        to_frame.mmult(la, a);
+        la.mmult(*transformed, *rotation);
+      }
+    else
+      copy_nonzeros(m, *compact, comm);
     transformed_rhs->reinit(b);
-    to_frame.vmult(*transformed_rhs, b);
+    *transformed_rhs = b;
+    apply_blocks(*transformed_rhs,
+                 b,
+                 [](const NodeFrame &f, unsigned int c, unsigned int d) {
+                   return f.to_frame[c][d];
+                 });
     residual->reinit(b);
 
     constrained.clear();
@@ -211,7 +452,7 @@ namespace ContactDynamics
     for (const Index i : constrained)
       {
         constrained_local.push_back(owned.index_within_set(i));
-        const double diagonal = transformed->diag_element(i);
+        const double diagonal = matrix().diag_element(i);
         // (a zero diagonal: the cycle's value stays)
         constrained_diagonal.push_back(diagonal != 0 ? diagonal : HUGE_VAL);
       }
@@ -221,7 +462,34 @@ namespace ContactDynamics
   ContactFrameMultigrid::back_transform(const TrilinosWrappers::MPI::Vector &y,
                                         TrilinosWrappers::MPI::Vector &x) const
   {
-    rotation->vmult(x, y);
+    if (!in_place)
+      {
+        rotation->vmult(x, y);
+        return;
+      }
+    x = y;
+    apply_blocks(x, y, [](const NodeFrame &f, unsigned int d, unsigned int c) {
+      return f.axes[c][d];
+    });
+  }
+
+  template <typename Block>
+  void
+  ContactFrameMultigrid::apply_blocks(TrilinosWrappers::MPI::Vector       &dst,
+                                      const TrilinosWrappers::MPI::Vector &src,
+                                      const Block &block) const
+  {
+    const IndexSet &owned = src.locally_owned_elements();
+    const double   *in    = src.begin();
+    double         *out   = dst.begin();
+    for (const auto &f : frames)
+      for (unsigned int i = 0; i < f.dofs.size(); ++i)
+        {
+          double value = 0;
+          for (unsigned int j = 0; j < f.dofs.size(); ++j)
+            value += block(f, i, j) * in[owned.index_within_set(f.dofs[j])];
+          out[owned.index_within_set(f.dofs[i])] = value;
+        }
   }
 
   bool
@@ -237,7 +505,7 @@ namespace ContactDynamics
                                const unsigned int         dofs_per_vertex)
   {
     amg_matrix = std::make_unique<TrilinosWrappers::SparseMatrix>();
-    amg_matrix->copy_from(*transformed);
+    amg_matrix->copy_from(matrix());
     eliminate_rows_and_columns(*amg_matrix, constrained);
     built_constrained = constrained;
     // the modes in the frames: T^T v at the frames' dofs
@@ -270,7 +538,7 @@ namespace ContactDynamics
   {
     amg->vmult(dst, src);
     // each constraint row solved for its own component, given the others
-    transformed->residual(*residual, dst, src);
+    matrix().residual(*residual, dst, src);
     double       *x = dst.begin();
     const double *r = residual->begin();
     for (unsigned int k = 0; k < constrained_local.size(); ++k)

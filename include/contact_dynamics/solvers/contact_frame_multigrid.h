@@ -106,7 +106,9 @@ namespace ContactDynamics
           const TrilinosWrappers::MPI::Vector &src) const;
 
   private:
-    std::unique_ptr<TrilinosWrappers::SparseMatrix>    rotation, transformed;
+    std::unique_ptr<TrilinosWrappers::SparseMatrix> rotation, transformed;
+    // L A T's nonzero entries (in-place transform)
+    std::unique_ptr<TrilinosWrappers::SparseMatrix>    compact;
     std::unique_ptr<TrilinosWrappers::MPI::Vector>     transformed_rhs;
     std::unique_ptr<TrilinosWrappers::SparseMatrix>    amg_matrix;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
@@ -119,6 +121,16 @@ namespace ContactDynamics
     std::vector<double>       constrained_diagonal;
     // frames of the last transform(), for the rotation of the modes
     std::vector<NodeFrame> frames;
+    // dst = M src on the frames' dofs, M(dofs[i], dofs[j]) = block(f, i, j)
+    // (src and dst differ; dst keeps its other entries)
+    template <typename Block>
+    void
+    apply_blocks(TrilinosWrappers::MPI::Vector       &dst,
+                 const TrilinosWrappers::MPI::Vector &src,
+                 const Block                         &block) const;
+
+    // whether L A T was formed in the matrix's own pattern (T not stored)
+    bool in_place = false;
   };
 
   /**
