@@ -366,7 +366,7 @@ namespace ContactDynamics
     , transformed(std::make_unique<TrilinosWrappers::SparseMatrix>())
     , compact(std::make_unique<TrilinosWrappers::SparseMatrix>())
     , transformed_rhs(std::make_unique<TrilinosWrappers::MPI::Vector>())
-    , residual(std::make_unique<TrilinosWrappers::MPI::Vector>())
+    , ghosted(std::make_unique<TrilinosWrappers::MPI::Vector>())
   {}
 
   ContactFrameMultigrid::~ContactFrameMultigrid() = default;
@@ -439,7 +439,6 @@ namespace ContactDynamics
                  [](const NodeFrame &f, unsigned int c, unsigned int d) {
                    return f.to_frame[c][d];
                  });
-    residual->reinit(b);
 
     constrained.clear();
     for (const auto &f : frames)
@@ -456,6 +455,47 @@ namespace ContactDynamics
         // (a zero diagonal: the cycle's value stays)
         constrained_diagonal.push_back(diagonal != 0 ? diagonal : HUGE_VAL);
       }
+    store_constraint_rows();
+  }
+
+  void
+  ContactFrameMultigrid::store_constraint_rows()
+  {
+    const IndexSet &owned = transformed_rhs->locally_owned_elements();
+    const MPI_Comm  comm  = transformed_rhs->get_mpi_communicator();
+    // the constraint rows' entries: their residuals after each cycle
+    // without a product with the whole matrix
+    const Epetra_CrsMatrix &t = matrix().trilinos_matrix();
+    IndexSet                needed(owned.size());
+    std::vector<Index>      columns;
+    row_values.clear();
+    row_start.assign(1, 0);
+    for (const Index i : constrained)
+      {
+        int     n       = 0;
+        double *values  = nullptr;
+        int    *indices = nullptr;
+        t.ExtractMyRowView(t.LRID(static_cast<int>(i)), n, values, indices);
+        for (int k = 0; k < n; ++k)
+          {
+            columns.push_back(t.GCID(indices[k]));
+            row_values.push_back(values[k]);
+          }
+        row_start.push_back(row_values.size());
+      }
+    std::vector<Index> sorted(columns);
+    std::sort(sorted.begin(), sorted.end());
+    sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+    needed.add_indices(sorted.begin(), sorted.end());
+    needed.add_indices(owned);
+    needed.compress();
+    any_constrained = Utilities::MPI::max(int(!constrained.empty()), comm) > 0;
+    ghosted->reinit(owned, needed, comm);
+    const Epetra_BlockMap &map = ghosted->trilinos_vector().Map();
+    row_columns.clear();
+    for (const Index c : columns)
+      row_columns.push_back(map.LID(static_cast<int>(c)));
+    corrections.resize(constrained.size());
   }
 
   void
@@ -537,12 +577,21 @@ namespace ContactDynamics
                                const TrilinosWrappers::MPI::Vector &src) const
   {
     amg->vmult(dst, src);
+    if (!any_constrained)
+      return;
     // each constraint row solved for its own component, given the others
-    matrix().residual(*residual, dst, src);
-    double       *x = dst.begin();
-    const double *r = residual->begin();
+    *ghosted         = dst;
+    const double *g  = ghosted->trilinos_vector()[0];
+    const double *in = src.begin();
     for (unsigned int k = 0; k < constrained_local.size(); ++k)
-      x[constrained_local[k]] +=
-        r[constrained_local[k]] / constrained_diagonal[k];
+      {
+        double r = in[constrained_local[k]];
+        for (unsigned int e = row_start[k]; e < row_start[k + 1]; ++e)
+          r -= row_values[e] * g[row_columns[e]];
+        corrections[k] = r / constrained_diagonal[k];
+      }
+    double *x = dst.begin();
+    for (unsigned int k = 0; k < constrained_local.size(); ++k)
+      x[constrained_local[k]] += corrections[k];
   }
 } // namespace ContactDynamics

@@ -112,13 +112,20 @@ namespace ContactDynamics
     std::unique_ptr<TrilinosWrappers::MPI::Vector>     transformed_rhs;
     std::unique_ptr<TrilinosWrappers::SparseMatrix>    amg_matrix;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
-    std::unique_ptr<TrilinosWrappers::MPI::Vector>     residual;
+    // dst of a cycle with the constraint rows' columns as ghosts
+    std::unique_ptr<TrilinosWrappers::MPI::Vector> ghosted;
     // the owned constrained components, sorted, of the last transform()
     // and of the hierarchy
     std::vector<types::global_dof_index> constrained, built_constrained;
     // their local indices and the transformed matrix's diagonal there
     std::vector<unsigned int> constrained_local;
     std::vector<double>       constrained_diagonal;
+    // the constraint rows (CSR; columns local to `ghosted`)
+    std::vector<unsigned int>   row_start;
+    std::vector<int>            row_columns;
+    std::vector<double>         row_values;
+    bool                        any_constrained = false;
+    mutable std::vector<double> corrections;
     // frames of the last transform(), for the rotation of the modes
     std::vector<NodeFrame> frames;
     // dst = M src on the frames' dofs, M(dofs[i], dofs[j]) = block(f, i, j)
@@ -128,6 +135,9 @@ namespace ContactDynamics
     apply_blocks(TrilinosWrappers::MPI::Vector       &dst,
                  const TrilinosWrappers::MPI::Vector &src,
                  const Block                         &block) const;
+
+    void
+    store_constraint_rows();
 
     // whether L A T was formed in the matrix's own pattern (T not stored)
     bool in_place = false;
