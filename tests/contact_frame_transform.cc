@@ -9,7 +9,8 @@
 // 2. a pattern where a row holds only one of the node's columns: the same
 //    numbers (by the sparse products);
 // 3. the same matrix with new values, one of them in place of a stored
-//    zero: the numbers follow (the kept pattern is not reused wrongly).
+//    zero: the numbers follow (the kept pattern is not reused wrongly);
+// 4. new values inside the kept pattern, one nonzero entry now zero.
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -177,4 +178,17 @@ main()
              c,
              pattern,
              true);
+
+  // 4. the first object again: values within its pattern, one set to zero
+  FullMatrix<double> d = c;
+  d(4, 7)              = 0;
+  d(5, 0) *= -2.5;
+  d(0, 8) = 0;
+  for (unsigned int i = 0; i < n; ++i)
+    d(i, i) *= 0.5;
+  check_case("4. new values in the kept pattern, one set to zero",
+             first,
+             d,
+             pattern,
+             false);
 }

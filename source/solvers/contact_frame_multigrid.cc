@@ -298,6 +298,45 @@ namespace ContactDynamics
       reduced.FillComplete(full.DomainMap(), full.RangeMap());
       compact.reinit(reduced, true);
     }
+
+    // dst = src; the values only if every process's pattern is the same
+    // (decided together: SparseMatrix::copy_from decides per process
+    // whether to rebuild, and the rebuild is collective). Collective.
+    void
+    copy_matrix(const TrilinosWrappers::SparseMatrix &src,
+                TrilinosWrappers::SparseMatrix       &dst,
+                const MPI_Comm                        comm)
+    {
+      const Epetra_CrsMatrix &a = src.trilinos_matrix();
+      Epetra_CrsMatrix       &b =
+        const_cast<Epetra_CrsMatrix &>(dst.trilinos_matrix());
+      bool same = dst.m() == src.m() && a.RowMap().SameAs(b.RowMap()) &&
+                  a.ColMap().SameAs(b.ColMap()) &&
+                  a.NumMyNonzeros() == b.NumMyNonzeros();
+      for (int r = 0; same && r < a.NumMyRows(); ++r)
+        {
+          int     n = 0, m = 0;
+          double *v = nullptr, *w = nullptr;
+          int    *i = nullptr, *j = nullptr;
+          a.ExtractMyRowView(r, n, v, i);
+          b.ExtractMyRowView(r, m, w, j);
+          same = n == m && std::equal(i, i + n, j);
+        }
+      if (Utilities::MPI::min(int(same), comm) == 0)
+        {
+          dst.reinit(a, true);
+          return;
+        }
+      for (int r = 0; r < a.NumMyRows(); ++r)
+        {
+          int     n = 0, m = 0;
+          double *v = nullptr, *w = nullptr;
+          int    *i = nullptr, *j = nullptr;
+          a.ExtractMyRowView(r, n, v, i);
+          b.ExtractMyRowView(r, m, w, j);
+          std::copy(v, v + n, w);
+        }
+    }
   } // namespace
 
   NodeFrame
@@ -397,7 +436,7 @@ namespace ContactDynamics
     std::vector<Index>  all_dofs;
     std::vector<double> all_axes;
     gather_frames(frames, comm, all_dofs, all_axes);
-    transformed->copy_from(a);
+    copy_matrix(a, *transformed, comm);
     Epetra_CrsMatrix &m =
       const_cast<Epetra_CrsMatrix &>(transformed->trilinos_matrix());
     const unsigned int dim =
