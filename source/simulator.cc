@@ -539,10 +539,10 @@ namespace ContactDynamics
       last_failure += " (on the mesh adapted to the step)";
     pcout << "  step to t = " << t_new << " with dt = " << controller.dt()
           << " failed: " << last_failure << std::endl;
-    // AMG solves the condensed system only approximately: on quasi-static
-    // contact Newton can stall above its tolerance where a direct solve
-    // converges in one step, and smaller steps do not help (issue 39:
-    // 494 cuts in 180 s on prm/examples/hertz_adaptive.prm)
+    // an inexact linear solve that keeps Newton from converging on a
+    // quasi-static problem is not helped by smaller steps (issue 39: 494
+    // cuts in 180 s on prm/examples/hertz_adaptive.prm, before the cycle
+    // damping recognized the cycle that caused them)
     if (!solved.newton.converged)
       ++failures_in_a_row;
     AssertThrow(integrator.is_dynamic() || linear_solver_name != "AMG" ||
@@ -552,10 +552,10 @@ namespace ContactDynamics
                   format_number(time) + " (last: " + last_failure +
                   ", residual " + format_number(solved.newton.final_residual) +
                   ") with Nonlinear solver/Linear solver = AMG on a "
-                  "quasi-static problem: the multigrid solve of the "
-                  "condensed contact system is not exact enough for "
-                  "Newton's tolerance here, and cutting the step does not "
-                  "change that. Use Linear solver = KLU, MUMPS or auto "
+                  "quasi-static problem: Newton does not converge with the "
+                  "multigrid solves of the condensed contact system here "
+                  "(Linear tolerance, Maximum iterations), and cutting the "
+                  "step does not change that. Use Linear solver = KLU, MUMPS or auto "
                   "(auto takes a direct solver for quasi-static runs); if "
                   "that fails as well, a body is not held (quasi-static "
                   "needs every body held by Dirichlet conditions or "

@@ -1,4 +1,4 @@
-# usage: compare_runs.py LABEL REFERENCE_DIR RUN_DIR
+# usage: compare_runs.py LABEL REFERENCE_DIR RUN_DIR [COLUMN,COLUMN...]
 # Two runs of the same scene that should agree to round-off (a restarted
 # run against one never stopped, another process count): statistics.csv
 # row by row and every contact_surface-*.csv of the reference, column by
@@ -10,6 +10,9 @@ label, ref, run = sys.argv[1:4]
 # which a mesh rebuilt from a checkpoint may order differently: the rows
 # are in the same order of position)
 skip = {"wall_time", "final_residual", "linear_iterations", "node"}
+# more columns to leave out (the Newton counts of two linear solvers)
+if len(sys.argv) > 4:
+    skip |= set(sys.argv[4].split(","))
 ENERGIES = {"transfer_energy", "energy_balance_error", "contact_work",
             "obstacle_work", "damping_dissipation", "external_work",
             "numerical_dissipation", "frictional_dissipation"}
@@ -32,12 +35,17 @@ def worst_difference(path_a, path_b):
     if "kinetic_energy" in head and "elastic_energy" in head:
         ke, ee = head.index("kinetic_energy"), head.index("elastic_energy")
         energy = max(abs(r[ke]) + abs(r[ee]) for r in a) or None
+    # a force component (zero by symmetry, say) against the largest one
+    forces = [k for k, name in enumerate(head) if name.startswith("contact_force_")]
+    force = max((abs(r[k]) for r in a for k in forces), default=0) or None
     for k, name in enumerate(head):
         if name in skip:
             continue
         scale = max(abs(r[k]) for r in a) or 1
         if energy and name in ENERGIES:
             scale = max(scale, energy)
+        if force and k in forces:
+            scale = max(scale, force)
         for x, y in zip(a, b):
             d = abs(x[k] - y[k]) / scale
             if not d <= worst:  # (a NaN counts as infinitely far)
