@@ -378,10 +378,12 @@ namespace ContactDynamics
                  const TrilinosWrappers::SparseMatrix &matrix,
                  const std::vector<double>            &null_space,
                  const unsigned int                    n_modes,
-                 const unsigned int                    dofs_per_vertex)
+                 const unsigned int                    dofs_per_vertex,
+                 const AmgSmoother                    &smoother)
   {
     TrilinosWrappers::PreconditionAMG::AdditionalData data(true, false);
-    data.smoother_sweeps = 2;
+    data.smoother_type   = smoother.type.c_str();
+    data.smoother_sweeps = smoother.sweeps;
     Teuchos::ParameterList              list;
     std::unique_ptr<Epetra_MultiVector> unused_modes;
     data.set_parameters(list, unused_modes, matrix);
@@ -581,7 +583,8 @@ namespace ContactDynamics
   void
   ContactFrameMultigrid::build(const std::vector<double> &null_space,
                                const unsigned int         n_modes,
-                               const unsigned int         dofs_per_vertex)
+                               const unsigned int         dofs_per_vertex,
+                               const AmgSmoother         &smoother)
   {
     amg_matrix = std::make_unique<TrilinosWrappers::SparseMatrix>();
     amg_matrix->copy_from(matrix());
@@ -608,7 +611,8 @@ namespace ContactDynamics
               }
           }
     amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-    initialize_amg(*amg, *amg_matrix, modes, n_modes, dofs_per_vertex);
+    initialize_amg(
+      *amg, *amg_matrix, modes, n_modes, dofs_per_vertex, smoother);
   }
 
   void

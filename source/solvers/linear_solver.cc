@@ -36,6 +36,15 @@ namespace ContactDynamics
     // cross too
     constexpr unsigned long metis_threshold_3d = 80000;
 
+    // ML's smoothers: Chebyshev (two sweeps) is the cheaper cycle where the
+    // mass term helps (dynamics); symmetric Gauss-Seidel (three sweeps)
+    // halves the GMRES iterations on quasi-static contact and keeps their
+    // growth near 1.2 per refinement (doc/solvers.md)
+    const Selection<LinearSolver::SmootherChoice> smoother_names{
+      {LinearSolver::SmootherChoice::automatic, "auto"},
+      {LinearSolver::SmootherChoice::chebyshev, "Chebyshev"},
+      {LinearSolver::SmootherChoice::gauss_seidel, "symmetric Gauss-Seidel"}};
+
     const Selection<LinearSolver::Ordering> ordering_names{
       {LinearSolver::Ordering::automatic, "auto"},
       {LinearSolver::Ordering::amd, "AMD"},
@@ -124,6 +133,27 @@ namespace ContactDynamics
       "AMD's flops at 105k unknowns and 9 % less time per factorization "
       "and less memory for the factors; at 16k it takes as long (small "
       "fronts), in 2-D the two are within noise. KLU orders with AMD always.");
+    prm.declare_entry(
+      "AMG smoother",
+      smoother_names.name(defaults.smoother_choice),
+      smoother_names.pattern(),
+      "AMG: ML's smoother on every level. Chebyshev (a polynomial in the "
+      "diagonally scaled matrix) or symmetric Gauss-Seidel (on each "
+      "process's rows). auto: Chebyshev for dynamic problems, symmetric "
+      "Gauss-Seidel for quasi-static ones. Measured (doc/solvers.md, "
+      "doc/krylov-growth-table.md): on the quasi-static Hertz cylinder "
+      "(15k, 56k, 220k unknowns) symmetric Gauss-Seidel with 3 sweeps "
+      "needs 14.6, 17.4 and 20.4 GMRES iterations per Newton iteration "
+      "where Chebyshev needs 28.8, 36.1 and 46.8, in less time; in "
+      "dynamics Chebyshev's cheaper cycle wins.");
+    prm.declare_entry(
+      "AMG smoother sweeps",
+      default_text(defaults.smoother_sweeps),
+      Patterns::Integer(0, 20),
+      "AMG: sweeps of the smoother before and after each coarse "
+      "correction (for Chebyshev its polynomial degree), in [0, 20]; 0: "
+      "2 for Chebyshev, 3 for symmetric Gauss-Seidel. More sweeps cost "
+      "more per cycle and save GMRES iterations.");
     prm.declare_entry("Maximum linear iterations",
                       default_text(defaults.max_iterations),
                       Patterns::Integer(1),
@@ -139,6 +169,8 @@ namespace ContactDynamics
     tolerance      = prm.get_double("Linear tolerance");
     max_iterations = prm.get_integer("Maximum linear iterations");
     eliminate_constrained = prm.get_bool("AMG contact elimination");
+    smoother_choice = smoother_names.value(prm.get("AMG smoother"));
+    smoother_sweeps = prm.get_integer("AMG smoother sweeps");
     ordering      = ordering_names.value(prm.get("Direct solver ordering"));
     this->verbose = verbose;
   }
@@ -167,6 +199,13 @@ namespace ContactDynamics
         else
           type = Type::klu;
       }
+    const bool gauss_seidel =
+      smoother_choice == SmootherChoice::gauss_seidel ||
+      (smoother_choice == SmootherChoice::automatic && !dynamic);
+    smoother.type   = gauss_seidel ? "symmetric Gauss-Seidel" : "Chebyshev";
+    smoother.sweeps = smoother_sweeps > 0 ? smoother_sweeps :
+                      gauss_seidel        ? 3 :
+                                            2;
     const bool metis = ordering == Ordering::metis ||
                        (ordering == Ordering::automatic && dim == 3 &&
                         n_unknowns >= metis_threshold_3d);
@@ -316,7 +355,8 @@ namespace ContactDynamics
       amg_matrix = std::make_unique<TrilinosWrappers::SparseMatrix>();
       amg_matrix->copy_from(matrix);
       amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-      initialize_amg(*amg, *amg_matrix, null_space, n_modes, dofs_per_vertex);
+      initialize_amg(
+        *amg, *amg_matrix, null_space, n_modes, dofs_per_vertex, smoother);
       ++amg_builds;
       iterations_after_build = 0;
     };
@@ -363,7 +403,7 @@ namespace ContactDynamics
     ContactFrameMultigrid &multigrid = *frame_multigrid;
     multigrid.transform(matrix, rhs, frames);
     const auto build = [&]() {
-      multigrid.build(null_space, n_modes, dofs_per_vertex);
+      multigrid.build(null_space, n_modes, dofs_per_vertex, smoother);
       ++amg_builds;
       iterations_after_build = 0;
     };

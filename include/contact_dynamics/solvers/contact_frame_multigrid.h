@@ -18,11 +18,22 @@
 #include <contact_dynamics/solvers/trilinos_forward.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace ContactDynamics
 {
   using namespace dealii;
+
+  /**
+   * ML's smoother on every level: its name ("Chebyshev", "symmetric
+   * Gauss-Seidel") and sweeps (the polynomial degree for Chebyshev).
+   */
+  struct AmgSmoother
+  {
+    std::string  type   = "Chebyshev";
+    unsigned int sweeps = 2;
+  };
 
   /**
    * A condensed secondary node in its frame (MultiplierCondensation).
@@ -98,7 +109,8 @@ namespace ContactDynamics
     void
     build(const std::vector<double> &null_space,
           const unsigned int         n_modes,
-          const unsigned int         dofs_per_vertex);
+          const unsigned int         dofs_per_vertex,
+          const AmgSmoother         &smoother);
 
     /** One cycle, then the constraint rows (the preconditioner). */
     void
@@ -144,16 +156,17 @@ namespace ContactDynamics
   };
 
   /**
-   * Sets up ML smoothed aggregation on `matrix` (Chebyshev, two sweeps),
-   * with `n_modes` near-null-space vectors over the locally owned dofs
-   * (one after the other) if there are.
+   * ML smoothed aggregation on `matrix` with the smoother `smoother`, with
+   * `n_modes` near-null-space vectors over the locally owned dofs (one
+   * after the other) if there are.
    */
   void
   initialize_amg(TrilinosWrappers::PreconditionAMG    &amg,
                  const TrilinosWrappers::SparseMatrix &matrix,
                  const std::vector<double>            &null_space,
                  const unsigned int                    n_modes,
-                 const unsigned int                    dofs_per_vertex);
+                 const unsigned int                    dofs_per_vertex,
+                 const AmgSmoother                    &smoother);
 } // namespace ContactDynamics
 
 #endif

@@ -42,6 +42,15 @@ namespace ContactDynamics
       metis
     };
 
+    // AMG's smoother: `automatic` is Chebyshev in dynamics, symmetric
+    // Gauss-Seidel for quasi-static problems
+    enum class SmootherChoice
+    {
+      automatic,
+      chebyshev,
+      gauss_seidel
+    };
+
     LinearSolver();
     ~LinearSolver();
 
@@ -67,7 +76,8 @@ namespace ContactDynamics
      * processes, in 3-D UMFPACK on one process (METIS ordering from
      * `metis_threshold_3d` unknowns) and MUMPS on several (doc/solvers.md
      * has the measured crossovers). Returns the name of the solver used.
-     * Throws if UMFPACK is asked for on several processes.
+     * Resolves `AMG smoother = auto` by `dynamic` as well. Throws if
+     * UMFPACK is asked for on several processes.
      */
     std::string
     choose(const unsigned long n_unknowns,
@@ -194,6 +204,10 @@ namespace ContactDynamics
     unsigned int                                       dofs_per_vertex = 1;
     unsigned int iterations_after_build                                = 0;
     bool         eliminate_constrained                                 = true;
+    SmootherChoice smoother_choice = SmootherChoice::automatic;
+    unsigned int   smoother_sweeps = 0;
+    // resolved by choose()
+    AmgSmoother smoother;
     // of the next matrix; the multigrid in their frames
     std::vector<NodeFrame>                 frames;
     std::unique_ptr<ContactFrameMultigrid> frame_multigrid;
