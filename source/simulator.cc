@@ -552,10 +552,10 @@ namespace ContactDynamics
                   format_number(time) + " (last: " + last_failure +
                   ", residual " + format_number(solved.newton.final_residual) +
                   ") with Nonlinear solver/Linear solver = AMG on a "
-                  "quasi-static problem: Newton does not converge with the "
-                  "multigrid solves of the condensed contact system here "
-                  "(Linear tolerance, Maximum iterations), and cutting the "
-                  "step does not change that. Use Linear solver = KLU, MUMPS or auto "
+                  "quasi-static problem: Newton does not converge within "
+                  "its Maximum iterations with the multigrid solves of the "
+                  "condensed contact system here (see Linear tolerance), "
+                  "and cutting the step does not change that. Use Linear solver = KLU, MUMPS or auto "
                   "(auto takes a direct solver for quasi-static runs); if "
                   "that fails as well, a body is not held (quasi-static "
                   "needs every body held by Dirichlet conditions or "

@@ -586,6 +586,8 @@ namespace ContactDynamics
                                const unsigned int         dofs_per_vertex,
                                const AmgSmoother         &smoother)
   {
+    // ML's destruction reads its matrix (IFPACK's smoothers do)
+    amg.reset();
     amg_matrix = std::make_unique<TrilinosWrappers::SparseMatrix>();
     amg_matrix->copy_from(matrix());
     eliminate_rows_and_columns(*amg_matrix, constrained);

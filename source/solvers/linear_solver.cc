@@ -352,6 +352,8 @@ namespace ContactDynamics
           frames_failed = true;
         }
     const auto build = [&]() {
+      // ML's destruction reads its matrix (IFPACK's smoothers do)
+      amg.reset();
       amg_matrix = std::make_unique<TrilinosWrappers::SparseMatrix>();
       amg_matrix->copy_from(matrix);
       amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();

@@ -311,9 +311,10 @@ namespace ContactDynamics
           increment *= history.damping;
         system.apply_update(increment);
         const double iterate = system.iterate_norm();
-        history.step_ratio   = iterate > 0 ?
-                                 increment.l2_norm() / iterate :
-                                 std::numeric_limits<double>::infinity();
+        // (of the undamped update: a damped one is no sign of round-off)
+        history.step_ratio = iterate > 0 ? increment.l2_norm() /
+                                             history.damping / iterate :
+                                           std::numeric_limits<double>::infinity();
         if (verbose_)
           log << "              |du| / |u| = " << std::scientific
               << std::setprecision(3) << history.step_ratio << std::defaultfloat

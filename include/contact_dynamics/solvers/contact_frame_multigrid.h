@@ -122,6 +122,7 @@ namespace ContactDynamics
     // L A T's nonzero entries (in-place transform)
     std::unique_ptr<TrilinosWrappers::SparseMatrix>    compact;
     std::unique_ptr<TrilinosWrappers::MPI::Vector>     transformed_rhs;
+    // (in this order: the hierarchy goes before its matrix)
     std::unique_ptr<TrilinosWrappers::SparseMatrix>    amg_matrix;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
     // dst of a cycle with the constraint rows' columns as ghosts

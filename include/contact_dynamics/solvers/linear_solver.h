@@ -197,8 +197,9 @@ namespace ContactDynamics
               const TrilinosWrappers::MPI::Vector  &rhs,
               TrilinosWrappers::MPI::Vector        &solution,
               const double                          rhs_norm);
-    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+    // (in this order: the hierarchy goes before its matrix)
     std::unique_ptr<TrilinosWrappers::SparseMatrix>    amg_matrix;
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
     std::vector<double>                                null_space;
     unsigned int                                       n_modes         = 0;
     unsigned int                                       dofs_per_vertex = 1;
