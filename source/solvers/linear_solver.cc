@@ -102,6 +102,30 @@ namespace ContactDynamics
       "system ill-conditioned: below about 1e-8 GMRES can "
       "fail with a loss of precision.");
     prm.declare_entry(
+      "Direct solver ordering",
+      ordering_names.name(defaults.ordering),
+      ordering_names.pattern(),
+      "UMFPACK's fill-reducing ordering, which decides the fill of the "
+      "factors and hence the cost of each factorization: AMD (approximate "
+      "minimum degree) or METIS (nested dissection). auto: METIS in 3-D "
+      "from 80,000 unknowns, AMD otherwise. Measured on the 3-D ironing "
+      "(doc/solvers.md, 'Direct solvers by dimension'): METIS needs 0.6 of "
+      "AMD's flops at 105k unknowns and 9 % less time per factorization "
+      "and less memory for the factors; at 16k it takes as long (small "
+      "fronts), in 2-D the two are within noise. KLU orders with AMD always.");
+    prm.declare_entry("Maximum linear iterations",
+                      default_text(defaults.max_iterations),
+                      Patterns::Integer(1),
+                      "GMRES: iterations (restarted every 100) before the "
+                      "solve counts as failed and the time step is cut.");
+    declare_amg_parameters(prm);
+  }
+
+  void
+  LinearSolver::declare_amg_parameters(ParameterHandler &prm)
+  {
+    const LinearSolver defaults;
+    prm.declare_entry(
       "AMG contact elimination",
       default_text(defaults.eliminate_constrained),
       Patterns::Bool(),
@@ -122,18 +146,6 @@ namespace ContactDynamics
       "hierarchy (seen with 3-D friction), the run goes on with the plain "
       "hierarchy.");
     prm.declare_entry(
-      "Direct solver ordering",
-      ordering_names.name(defaults.ordering),
-      ordering_names.pattern(),
-      "UMFPACK's fill-reducing ordering, which decides the fill of the "
-      "factors and hence the cost of each factorization: AMD (approximate "
-      "minimum degree) or METIS (nested dissection). auto: METIS in 3-D "
-      "from 80,000 unknowns, AMD otherwise. Measured on the 3-D ironing "
-      "(doc/solvers.md, 'Direct solvers by dimension'): METIS needs 0.6 of "
-      "AMD's flops at 105k unknowns and 9 % less time per factorization "
-      "and less memory for the factors; at 16k it takes as long (small "
-      "fronts), in 2-D the two are within noise. KLU orders with AMD always.");
-    prm.declare_entry(
       "AMG smoother",
       smoother_names.name(defaults.smoother_choice),
       smoother_names.pattern(),
@@ -144,8 +156,10 @@ namespace ContactDynamics
       "doc/krylov-growth-table.md): on the quasi-static Hertz cylinder "
       "(15k, 56k, 220k unknowns) symmetric Gauss-Seidel with 3 sweeps "
       "needs 14.6, 17.4 and 20.4 GMRES iterations per Newton iteration "
-      "where Chebyshev needs 28.8, 36.1 and 46.8, in less time; in "
-      "dynamics Chebyshev's cheaper cycle wins.");
+      "where Chebyshev needs 28.8, 36.1 and 46.8 (growth 1.2 per "
+      "refinement against 1.3), in about the same time at these sizes; "
+      "in dynamics Chebyshev's cheaper cycle is 2.5 times faster (2-D "
+      "ironing).");
     prm.declare_entry(
       "AMG smoother sweeps",
       default_text(defaults.smoother_sweeps),
@@ -154,11 +168,6 @@ namespace ContactDynamics
       "correction (for Chebyshev its polynomial degree), in [0, 20]; 0: "
       "2 for Chebyshev, 3 for symmetric Gauss-Seidel. More sweeps cost "
       "more per cycle and save GMRES iterations.");
-    prm.declare_entry("Maximum linear iterations",
-                      default_text(defaults.max_iterations),
-                      Patterns::Integer(1),
-                      "GMRES: iterations (restarted every 100) before the "
-                      "solve counts as failed and the time step is cut.");
   }
 
   void

@@ -162,6 +162,9 @@ namespace ContactDynamics
     reset();
 
   private:
+    static void
+    declare_amg_parameters(ParameterHandler &prm);
+
     void
     factorize(const TrilinosWrappers::SparseMatrix &matrix);
 
