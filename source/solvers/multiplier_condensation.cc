@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <contact_dynamics/solvers/multiplier_condensation.h>
+#include <contact_dynamics/solvers/multiplier_substitution.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,17 +18,11 @@ namespace ContactDynamics
 {
   using Index = types::global_dof_index;
 
-  struct internal::MultiplierElimination
-  {
-    Index               multiplier = 0;
-    double              e          = 0;
-    std::vector<Index>  columns;
-    std::vector<double> values;
-  };
 
   namespace
   {
-    using SparseRow = std::vector<std::pair<Index, double>>;
+    using internal::SparseRow;
+    using internal::Substitution;
 
     /** A locally owned row of the matrix. */
     SparseRow
@@ -43,25 +38,6 @@ namespace ContactDynamics
       for (int k = 0; k < n; ++k)
         result[k] = {static_cast<Index>(matrix.GCID(indices[k])), values[k]};
       return result;
-    }
-
-    /** Adds up the entries of equal columns; drops exact zeros. */
-    void
-    compress_row(SparseRow &row)
-    {
-      std::sort(row.begin(), row.end(), [](const auto &a, const auto &b) {
-        return a.first < b.first;
-      });
-      SparseRow merged;
-      for (const auto &entry : row)
-        if (!merged.empty() && merged.back().first == entry.first)
-          merged.back().second += entry.second;
-        else
-          merged.push_back(entry);
-      row.clear();
-      for (const auto &entry : merged)
-        if (entry.second != 0)
-          row.push_back(entry);
     }
 
     double
@@ -172,7 +148,69 @@ namespace ContactDynamics
       const MultiplierGroup           *group = nullptr;
       std::vector<SparseRow>           rows; // of the displacements
       std::vector<std::vector<double>> q, r;
+      // the rows' nonzero entries outside the condensed columns, dense on
+      // the union of their columns: row d at columns[i] is values[i dim + d]
+      std::vector<Index>  columns;
+      std::vector<double> values;
     };
+
+    /**
+     * Sets g.columns and g.values, in linear time: `condensed` flags the
+     * local columns of condensed multipliers, `position` is -1 for every
+     * local column and is left so.
+     */
+    void
+    merge_rows(CondensableGroup        &g,
+               const Epetra_CrsMatrix  &matrix,
+               const std::vector<bool> &condensed,
+               std::vector<int>        &position)
+    {
+      const unsigned int dim = g.rows.size();
+      std::vector<int>   local_columns;
+      g.values.clear();
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const int row =
+            matrix.LRID(static_cast<int>(g.group->displacements[d]));
+          int     n       = 0;
+          double *values  = nullptr;
+          int    *indices = nullptr;
+          matrix.ExtractMyRowView(row, n, values, indices);
+          for (int k = 0; k < n; ++k)
+            if (values[k] != 0 && !condensed[indices[k]])
+              {
+                if (position[indices[k]] < 0)
+                  {
+                    position[indices[k]] = local_columns.size();
+                    local_columns.push_back(indices[k]);
+                    g.values.resize(g.values.size() + dim, 0.);
+                  }
+                g.values[position[indices[k]] * dim + d] = values[k];
+              }
+        }
+      g.columns.clear();
+      for (const int c : local_columns)
+        {
+          g.columns.push_back(static_cast<Index>(matrix.GCID(c)));
+          position[c] = -1;
+        }
+    }
+
+    /** sum_d weights[d] rows[d] of a merged group, zeros dropped. */
+    SparseRow
+    combine(const CondensableGroup &g, const std::vector<double> &weights)
+    {
+      SparseRow result;
+      for (unsigned int i = 0; i < g.columns.size(); ++i)
+        {
+          double value = 0;
+          for (unsigned int d = 0; d < weights.size(); ++d)
+            value += weights[d] * g.values[i * weights.size() + d];
+          if (value != 0)
+            result.emplace_back(g.columns[i], value);
+        }
+      return result;
+    }
 
     /** Rows replaced by the condensation, with their right-hand sides. */
     using ReplacedRows =
@@ -230,7 +268,6 @@ namespace ContactDynamics
     void
     add_eliminations(const CondensableGroup              &g,
                      const TrilinosWrappers::MPI::Vector &rhs,
-                     const std::vector<Index>            &all_condensed,
                      std::vector<Elimination>            &eliminations)
     {
       const unsigned int dim = g.rows.size(), k = g.group->multipliers.size();
@@ -247,16 +284,9 @@ namespace ContactDynamics
         {
           Elimination elimination;
           elimination.multiplier = g.group->multipliers[a];
-          SparseRow f;
           for (unsigned int d = 0; d < dim; ++d)
-            {
-              elimination.e += e[a][d] * rhs(g.group->displacements[d]);
-              for (const auto &x : g.rows[d])
-                if (!contains(all_condensed, x.first))
-                  f.emplace_back(x.first, e[a][d] * x.second);
-            }
-          compress_row(f);
-          for (const auto &x : f)
+            elimination.e += e[a][d] * rhs(g.group->displacements[d]);
+          for (const auto &x : combine(g, e[a]))
             {
               elimination.columns.push_back(x.first);
               elimination.values.push_back(x.second);
@@ -305,118 +335,6 @@ namespace ContactDynamics
       return all_eliminations;
     }
 
-    /**
-     * Rows of the matrix with the condensed multipliers substituted: in
-     * 3-D a row collects some thirty eliminations of two hundred columns
-     * each, merged in linear time in a dense accumulator over "slots" (the
-     * columns that occur) instead of sorted.
-     */
-    class Substitution
-    {
-    public:
-      Substitution(
-        const Epetra_CrsMatrix                       &matrix,
-        const std::vector<Index>                     &all_condensed,
-        const std::unordered_map<Index, Elimination> &all_eliminations)
-        : matrix(matrix)
-        , all_eliminations(all_eliminations)
-        , condensed_column(matrix.NumMyCols(), false)
-        , local_slot(matrix.NumMyCols())
-      {
-        for (int c = 0; c < matrix.NumMyCols(); ++c)
-          condensed_column[c] =
-            contains(all_condensed, static_cast<Index>(matrix.GCID(c)));
-        for (int c = 0; c < matrix.NumMyCols(); ++c)
-          local_slot[c] = slot(static_cast<Index>(matrix.GCID(c)));
-        for (const auto &[m, x] : all_eliminations)
-          {
-            auto &slots = elimination_slots[m];
-            for (const Index c : x.columns)
-              slots.push_back(slot(c));
-          }
-        sum.assign(slot_column.size(), 0.);
-        touched.assign(slot_column.size(), false);
-      }
-
-      /** Whether the local column `c` is a condensed multiplier. */
-      bool
-      is_condensed_column(const int c) const
-      {
-        return condensed_column[c];
-      }
-
-      /**
-       * The locally owned `row` with dlambda = -e - F du substituted for
-       * its condensed columns; their e terms are taken from `rhs_value`.
-       */
-      SparseRow
-      operator()(const Index row, double &rhs_value)
-      {
-        int     n       = 0;
-        double *values  = nullptr;
-        int    *indices = nullptr;
-        Assert(matrix.LRID(static_cast<int>(row)) >= 0, ExcInternalError());
-        matrix.ExtractMyRowView(matrix.LRID(static_cast<int>(row)),
-                                n,
-                                values,
-                                indices);
-        for (int k = 0; k < n; ++k)
-          if (!condensed_column[indices[k]])
-            add_to_sum(local_slot[indices[k]], values[k]);
-          else
-            {
-              const Index        m           = matrix.GCID(indices[k]);
-              const Elimination &elimination = all_eliminations.at(m);
-              const auto        &slots       = elimination_slots.at(m);
-              rhs_value -= values[k] * elimination.e;
-              for (unsigned int c = 0; c < slots.size(); ++c)
-                add_to_sum(slots[c], -values[k] * elimination.values[c]);
-            }
-        SparseRow result;
-        for (const unsigned int s : touched_slots)
-          {
-            if (sum[s] != 0)
-              result.emplace_back(slot_column[s], sum[s]);
-            sum[s]     = 0;
-            touched[s] = false;
-          }
-        touched_slots.clear();
-        return result;
-      }
-
-    private:
-      unsigned int
-      slot(const Index column)
-      {
-        const auto [it, inserted] =
-          slot_of.try_emplace(column, slot_column.size());
-        if (inserted)
-          slot_column.push_back(column);
-        return it->second;
-      }
-
-      void
-      add_to_sum(const unsigned int s, const double value)
-      {
-        if (!touched[s])
-          {
-            touched[s] = true;
-            touched_slots.push_back(s);
-          }
-        sum[s] += value;
-      }
-
-      const Epetra_CrsMatrix                              &matrix;
-      const std::unordered_map<Index, Elimination>        &all_eliminations;
-      std::vector<bool>                                    condensed_column;
-      std::unordered_map<Index, unsigned int>              slot_of;
-      std::vector<Index>                                   slot_column;
-      std::vector<unsigned int>                            local_slot;
-      std::unordered_map<Index, std::vector<unsigned int>> elimination_slots;
-      std::vector<double>                                  sum;
-      std::vector<bool>                                    touched;
-      std::vector<unsigned int>                            touched_slots;
-    };
 
     /**
      * The k condensed multiplier rows and the dim - k rotated displacement
@@ -425,7 +343,6 @@ namespace ContactDynamics
     void
     group_equations(const CondensableGroup              &g,
                     const TrilinosWrappers::MPI::Vector &rhs,
-                    const std::vector<Index>            &all_condensed,
                     Substitution                        &substitute,
                     std::vector<SparseRow>              &equations,
                     std::vector<double>                 &values)
@@ -441,14 +358,13 @@ namespace ContactDynamics
         }
       for (unsigned int b = k; b < dim; ++b)
         {
+          std::vector<double> weights(dim);
           for (unsigned int d = 0; d < dim; ++d)
             {
               values[b] += g.q[d][b] * rhs(g.group->displacements[d]);
-              for (const auto &x : g.rows[d])
-                if (!contains(all_condensed, x.first))
-                  equations[b].emplace_back(x.first, g.q[d][b] * x.second);
+              weights[d] = g.q[d][b];
             }
-          compress_row(equations[b]);
+          equations[b] = combine(g, weights);
         }
     }
 
@@ -504,14 +420,13 @@ namespace ContactDynamics
     replace_group_rows(const CondensableGroup              &g,
                        const Epetra_CrsMatrix              &matrix,
                        const TrilinosWrappers::MPI::Vector &rhs,
-                       const std::vector<Index>            &all_condensed,
                        Substitution                        &substitute,
                        ReplacedRows                        &replaced,
                        std::vector<NodeFrame>              &frames)
     {
       std::vector<SparseRow> equations;
       std::vector<double>    values;
-      group_equations(g, rhs, all_condensed, substitute, equations, values);
+      group_equations(g, rhs, substitute, equations, values);
       const std::vector<unsigned int> best =
         placement(equations, g.group->displacements);
       // each equation scaled to the diagonal of the stiffness row it
@@ -536,13 +451,15 @@ namespace ContactDynamics
       std::vector<bool>  constrained(dim, false);
       std::vector<std::vector<double>> stiffness(dim), coefficients(dim);
       for (unsigned int b = 0; b < dim; ++b)
-        for (unsigned int e = 0; e < dim; ++e)
-          {
-            stiffness[b].push_back(entry(g.rows[b], dofs[e]));
-            coefficients[b].push_back(entry(equations[b], dofs[e]));
-            constrained[b] =
-              b < k && is_constraint(matrix, g.group->multipliers[b], *g.group);
-          }
+        {
+          for (unsigned int e = 0; e < dim; ++e)
+            {
+              stiffness[b].push_back(entry(g.rows[b], dofs[e]));
+              coefficients[b].push_back(entry(equations[b], dofs[e]));
+            }
+          constrained[b] =
+            b < k && is_constraint(matrix, g.group->multipliers[b], *g.group);
+        }
       if (std::find(constrained.begin(), constrained.end(), true) !=
           constrained.end())
         frames.push_back(make_node_frame(dofs,
@@ -607,19 +524,23 @@ namespace ContactDynamics
                  const bool              copy_jacobian,
                  const MPI_Comm          comm)
     {
-      bool fits = copy_jacobian;
-      for (const auto &r : replaced)
+      bool             fits = copy_jacobian;
+      std::vector<int> row_of_column(matrix.NumMyCols(), -1);
+      for (auto r = replaced.begin(); fits && r != replaced.end(); ++r)
         {
-          const SparseRow    existing = read_row(matrix, r.first);
-          std::vector<Index> columns;
-          for (const auto &x : existing)
-            columns.push_back(x.first);
-          std::sort(columns.begin(), columns.end());
-          for (const auto &x : r.second.first)
-            fits = fits &&
-                   std::binary_search(columns.begin(), columns.end(), x.first);
-          if (!fits)
-            break;
+          const int row = matrix.LRID(static_cast<int>(r->first));
+          Assert(row >= 0, ExcInternalError());
+          int     n       = 0;
+          double *values  = nullptr;
+          int    *indices = nullptr;
+          matrix.ExtractMyRowView(row, n, values, indices);
+          for (int k = 0; k < n; ++k)
+            row_of_column[indices[k]] = row;
+          for (const auto &x : r->second.first)
+            {
+              const int column = matrix.LCID(static_cast<int>(x.first));
+              fits = fits && column >= 0 && row_of_column[column] == row;
+            }
         }
       return Utilities::MPI::min(fits ? 1 : 0, comm) == 1;
     }
@@ -640,19 +561,42 @@ namespace ContactDynamics
       matrix.set(row, columns, values, false);
     }
 
-    /** The condensed matrix as a copy of the Jacobian, rows rewritten. */
+    /**
+     * The condensed matrix as a copy of the Jacobian, rows rewritten in
+     * place (their columns are in the pattern: fits_pattern()).
+     */
     void
     copy_with_rows(TrilinosWrappers::SparseMatrix       &condensed,
                    const TrilinosWrappers::SparseMatrix &jacobian,
                    const ReplacedRows                   &replaced)
     {
       condensed.copy_from(jacobian);
+      Epetra_CrsMatrix &c =
+        const_cast<Epetra_CrsMatrix &>(condensed.trilinos_matrix());
+      std::vector<int> position(c.NumMyCols(), -1);
       for (const auto &r : replaced)
         {
-          condensed.clear_row(r.first);
-          set_row(condensed, r.first, r.second.first);
+          int     n       = 0;
+          double *values  = nullptr;
+          int    *indices = nullptr;
+          c.ExtractMyRowView(c.LRID(static_cast<int>(r.first)),
+                             n,
+                             values,
+                             indices);
+          for (int k = 0; k < n; ++k)
+            {
+              position[indices[k]] = k;
+              values[k]            = 0;
+            }
+          for (const auto &x : r.second.first)
+            {
+              const int column = c.LCID(static_cast<int>(x.first));
+              Assert(column >= 0 && position[column] >= 0, ExcInternalError());
+              values[position[column]] = x.second;
+            }
+          for (int k = 0; k < n; ++k)
+            position[indices[k]] = -1;
         }
-      condensed.compress(VectorOperation::insert);
     }
 
     /** The condensed matrix with a pattern of its own. */
@@ -715,16 +659,25 @@ namespace ContactDynamics
     const MPI_Comm          comm   = rhs.get_mpi_communicator();
 
     // 1. which groups can be condensed, with their bases
-    const std::vector<CondensableGroup> condensed =
+    std::vector<CondensableGroup> condensed =
       condensable_groups(matrix, groups);
     const std::vector<Index> all_condensed =
       all_condensed_multipliers(condensed, comm);
     n_condensed_multipliers = all_condensed.size();
+    {
+      std::vector<bool> condensed_column(matrix.NumMyCols(), false);
+      for (const Index m : all_condensed)
+        if (matrix.LCID(static_cast<int>(m)) >= 0)
+          condensed_column[matrix.LCID(static_cast<int>(m))] = true;
+      std::vector<int> position(matrix.NumMyCols(), -1);
+      for (auto &g : condensed)
+        merge_rows(g, matrix, condensed_column, position);
+    }
 
     // 2. dlambda = -e - F du per condensed multiplier: E = R^-1 Q_1^T
     eliminations.clear();
     for (const auto &g : condensed)
-      add_eliminations(g, rhs, all_condensed, eliminations);
+      add_eliminations(g, rhs, eliminations);
     const std::unordered_map<Index, Elimination> all_eliminations =
       gather_eliminations(eliminations, comm);
     Substitution substitute(matrix, all_condensed, all_eliminations);
@@ -733,13 +686,7 @@ namespace ContactDynamics
     ReplacedRows replaced;
     frames.clear();
     for (const auto &g : condensed)
-      replace_group_rows(g,
-                         matrix,
-                         rhs,
-                         all_condensed,
-                         substitute,
-                         replaced,
-                         frames);
+      replace_group_rows(g, matrix, rhs, substitute, replaced, frames);
     replace_other_rows(matrix, rhs, all_condensed, substitute, replaced);
 
     const bool fits = fits_pattern(matrix, replaced, copy_jacobian, comm);

@@ -22,7 +22,8 @@ namespace ContactDynamics
 
   namespace internal
   {
-    /** dlambda_m = -e - F du of one condensed multiplier (in the source). */
+    /** dlambda_m = -e - F du of one condensed multiplier
+     * (multiplier_substitution.h). */
     struct MultiplierElimination;
   } // namespace internal
 
