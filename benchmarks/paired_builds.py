@@ -36,7 +36,8 @@ SECTIONS = ["contact assembly", "bulk assembly", "linear solve", "setup"]
 COMPARED = ["kinetic_energy", "elastic_energy", "cumulative_newton_iterations"]
 
 
-def command(exe, work, scene, end, build, library, repeat, changes):
+def command(exe, work, scene, end, build, library, repeat, changes,
+            environment=()):
     stem = Path(scene).parent.name + "_" + Path(scene).stem
     name = f"{stem}_{build}_{repeat}"
     changes = dict(changes, **{"Output/Output directory": str(work / name),
@@ -46,7 +47,7 @@ def command(exe, work, scene, end, build, library, repeat, changes):
     prm = work / f"{name}.prm"
     bench_common.write_prm(prm, REPO / scene, changes)
     return (["env"] + ([f"LD_LIBRARY_PATH={library}"] if library else [])
-            + [exe, str(prm)])
+            + list(environment) + [exe, str(prm)])
 
 
 def row(scene, end, build, repeat, log, peak):
@@ -130,6 +131,10 @@ def main(argv):
     parser.add_argument("--baseline", default="",
                         help="directory of the baseline build's"
                         " libcontact-dynamics-lib.so")
+    parser.add_argument("--baseline-env", action="append", default=[],
+                        help="VAR=value for the baseline's runs only"
+                        " (repeatable): with it, --baseline may be left"
+                        " out to compare one build under two settings")
     parser.add_argument("--name", required=True,
                         help="names the CSV and the table")
     parser.add_argument("--repeats", type=int, default=3)
@@ -145,8 +150,8 @@ def main(argv):
                         " sees the same machine state)")
     parser.add_argument("--table-only", action="store_true")
     args = parser.parse_args(argv)
-    if not args.table_only and not (
-            Path(args.baseline) / "libcontact-dynamics-lib.so").exists():
+    if not args.table_only and (args.baseline or not args.baseline_env) \
+            and not (Path(args.baseline) / "libcontact-dynamics-lib.so").exists():
         parser.error(f"--baseline '{args.baseline}': no"
                      " libcontact-dynamics-lib.so there")
     work = REPO / f"benchmarks/results/paired_{args.name}"
@@ -168,13 +173,14 @@ def main(argv):
         results = []
         for repeat in range(args.repeats):
             for scene, end in scenes:
-                builds = (("baseline", args.baseline), ("changed", ""))
+                builds = (("baseline", args.baseline, args.baseline_env),
+                          ("changed", "", []))
                 if repeat % 2:
                     # alternating, so that an order effect cancels
                     builds = builds[::-1]
                 commands = [command(args.exe, work, scene, end, build,
-                                    library, repeat, changes)
-                            for build, library in builds]
+                                    library, repeat, changes, environment)
+                            for build, library, environment in builds]
                 if args.concurrent:
                     # one core each, at the same time
                     with ThreadPoolExecutor(2) as pool:
@@ -183,7 +189,7 @@ def main(argv):
                 else:
                     measured = [bench_common.run_measured(c)
                                 for c in commands]
-                for (build, _), (log, peak) in zip(builds, measured):
+                for (build, _, _), (log, peak) in zip(builds, measured):
                     results.append(row(scene, end, build, repeat, log, peak))
                     results[-1]["concurrent"] = args.concurrent
                     with open("/proc/loadavg") as f:

@@ -495,3 +495,10 @@ namespace ContactDynamics
     return 1;
   }
 } // namespace ContactDynamics
+
+// the thin main opens the library and calls this (source/main.cc)
+extern "C" int
+contact_dynamics_run_command_line(int argc, char **argv)
+{
+  return ContactDynamics::run_command_line(argc, argv);
+}
