@@ -611,7 +611,11 @@ namespace ContactDynamics
   bool
   ContactFrameMultigrid::needs_build() const
   {
-    return Utilities::MPI::max(int(!amg || constrained != built_constrained),
+    // (a hierarchy of other unknowns would write past its vectors)
+    return Utilities::MPI::max(int(!amg || constrained != built_constrained ||
+                                   amg_matrix->m() != matrix().m() ||
+                                   amg_matrix->local_size() !=
+                                     matrix().local_size()),
                                transformed->get_mpi_communicator()) > 0;
   }
 

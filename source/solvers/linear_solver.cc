@@ -178,8 +178,8 @@ namespace ContactDynamics
     tolerance      = prm.get_double("Linear tolerance");
     max_iterations = prm.get_integer("Maximum linear iterations");
     eliminate_constrained = prm.get_bool("AMG contact elimination");
-    smoother_choice = smoother_names.value(prm.get("AMG smoother"));
-    smoother_sweeps = prm.get_integer("AMG smoother sweeps");
+    smoother_choice       = smoother_names.value(prm.get("AMG smoother"));
+    smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
     ordering      = ordering_names.value(prm.get("Direct solver ordering"));
     this->verbose = verbose;
   }
@@ -211,10 +211,10 @@ namespace ContactDynamics
     const bool gauss_seidel =
       smoother_choice == SmootherChoice::gauss_seidel ||
       (smoother_choice == SmootherChoice::automatic && !dynamic);
-    smoother.type   = gauss_seidel ? "symmetric Gauss-Seidel" : "Chebyshev";
-    smoother.sweeps = smoother_sweeps > 0 ? smoother_sweeps :
-                      gauss_seidel        ? 3 :
-                                            2;
+    smoother.type    = gauss_seidel ? "symmetric Gauss-Seidel" : "Chebyshev";
+    smoother.sweeps  = smoother_sweeps > 0 ? smoother_sweeps :
+                       gauss_seidel        ? 3 :
+                                             2;
     const bool metis = ordering == Ordering::metis ||
                        (ordering == Ordering::automatic && dim == 3 &&
                         n_unknowns >= metis_threshold_3d);
@@ -237,8 +237,12 @@ namespace ContactDynamics
     null_space.clear();
     for (const auto &mode : modes)
       null_space.insert(null_space.end(), mode.begin(), mode.end());
+    // new unknowns (a mesh change): no hierarchy of the old ones survives,
+    // the frames' one included (its constrained components can compare
+    // equal across a mesh change, none in both, say)
     amg.reset();
     amg_matrix.reset();
+    frame_multigrid.reset();
   }
 
   void
@@ -366,8 +370,12 @@ namespace ContactDynamics
       amg_matrix = std::make_unique<TrilinosWrappers::SparseMatrix>();
       amg_matrix->copy_from(matrix);
       amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-      initialize_amg(
-        *amg, *amg_matrix, null_space, n_modes, dofs_per_vertex, smoother);
+      initialize_amg(*amg,
+                     *amg_matrix,
+                     null_space,
+                     n_modes,
+                     dofs_per_vertex,
+                     smoother);
       ++amg_builds;
       iterations_after_build = 0;
     };

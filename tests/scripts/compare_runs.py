@@ -15,7 +15,8 @@ if len(sys.argv) > 4:
     skip |= set(sys.argv[4].split(","))
 ENERGIES = {"transfer_energy", "energy_balance_error", "contact_work",
             "obstacle_work", "damping_dissipation", "external_work",
-            "numerical_dissipation", "frictional_dissipation"}
+            "numerical_dissipation", "frictional_dissipation",
+            "energy_created"}
 
 
 def table(path):
