@@ -215,6 +215,16 @@ namespace ContactDynamics
       return true;
     }
 
+    // whether `compact` is a matrix of `full`'s rows and columns
+    bool
+    same_maps(const Epetra_CrsMatrix               &full,
+              const TrilinosWrappers::SparseMatrix &compact)
+    {
+      return compact.m() == static_cast<unsigned int>(full.NumGlobalRows()) &&
+             compact.trilinos_matrix().RowMap().SameAs(full.RowMap()) &&
+             compact.trilinos_matrix().ColMap().SameAs(full.ColMap());
+    }
+
     // The entries of `full` into `compact` (same row and column maps) if
     // its pattern holds all of them that are nonzero. Collective.
     bool
@@ -222,10 +232,7 @@ namespace ContactDynamics
                       TrilinosWrappers::SparseMatrix &compact,
                       const MPI_Comm                  comm)
     {
-      bool fits =
-        compact.m() == static_cast<unsigned int>(full.NumGlobalRows()) &&
-        compact.trilinos_matrix().RowMap().SameAs(full.RowMap()) &&
-        compact.trilinos_matrix().ColMap().SameAs(full.ColMap());
+      bool fits = same_maps(full, compact);
       if (fits)
         {
           Epetra_CrsMatrix &c =
@@ -268,11 +275,8 @@ namespace ContactDynamics
     copy_nonzeros(const Epetra_CrsMatrix         &full,
                   TrilinosWrappers::SparseMatrix &compact)
     {
-      const bool had_pattern =
-        compact.m() == static_cast<unsigned int>(full.NumGlobalRows()) &&
-        compact.trilinos_matrix().RowMap().SameAs(full.RowMap()) &&
-        compact.trilinos_matrix().ColMap().SameAs(full.ColMap());
-      const Epetra_CrsMatrix &old = compact.trilinos_matrix();
+      const bool              had_pattern = same_maps(full, compact);
+      const Epetra_CrsMatrix &old         = compact.trilinos_matrix();
       // per row: which entries of `full` to keep, 1 (nonzero or diagonal)
       // or 2 (also in the previous pattern)
       std::vector<std::vector<char>> keep(full.NumMyRows());
