@@ -46,6 +46,10 @@ namespace ContactDynamics
         BodyParameters::declare_parameters(prm, dim);
         prm.leave_subsection();
       }
+    prm.enter_subsection("Finite element");
+    Discretization<dim>::declare_parameters(prm);
+    prm.leave_subsection();
+
     prm.enter_subsection("Boundary conditions");
     DirichletConditions<dim>::declare_parameters(prm);
     prm.leave_subsection();
@@ -486,8 +490,8 @@ namespace ContactDynamics
                                        increment);
         if (!energies.empty())
           verdict.reason = energies;
-        // DataOut evaluates the stresses at the corners (collective: on
-        // every process, whatever the failure)
+        // DataOut evaluates the stresses at the nodes (with degree 1 the
+        // corners; collective: on every process, whatever the failure)
         const std::string inverted = mechanics->inverted_corner(u_ghost);
         if (verdict.reason.empty())
           verdict.reason = inverted;
@@ -592,7 +596,8 @@ namespace ContactDynamics
   void
   Simulator<dim>::set_prescribed_values(VectorType &x, const double t)
   {
-    for (const auto &p : dirichlet.values(dof_handler, t))
+    for (const auto &p :
+         dirichlet.values(discretization.mapping(), dof_handler, t))
       if (locally_owned.is_element(p.first))
         x(p.first) = p.second;
     x.compress(VectorOperation::insert);
@@ -608,7 +613,7 @@ namespace ContactDynamics
     Tensor<1, dim>           force;
     for (unsigned int d = 0; d < dim; ++d)
       {
-        std::vector<bool> mask(fe->n_components(), false);
+        std::vector<bool> mask(discretization.fe().n_components(), false);
         mask[d] = true;
         for (const auto i : DoFTools::extract_boundary_dofs(dof_handler,
                                                             ComponentMask(mask),

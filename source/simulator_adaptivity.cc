@@ -81,7 +81,7 @@ namespace ContactDynamics
     // the momenta and cannot add kinetic energy (the multipliers and the
     // prescribed values stay)
     {
-      std::vector<bool> extra(fe->n_components(), true);
+      std::vector<bool> extra(discretization.fe().n_components(), true);
       for (unsigned int d = 0; d < dim; ++d)
         extra[d] = false;
       IndexSet fixed =

@@ -168,7 +168,8 @@ namespace ContactDynamics
     const double cells = triangulation->n_global_active_cells();
     const double bytes =
       8. * checkpoint_vectors().size() *
-        std::max<double>(dof_handler.n_dofs(), cells * fe->n_dofs_per_cell()) +
+        std::max<double>(dof_handler.n_dofs(),
+                         cells * discretization.fe().n_dofs_per_cell()) +
       64. * cells + 4. * parameters_text.size() + 1e6;
     check_collectively(mpi_communicator, [&]() {
       if (root)

@@ -39,7 +39,7 @@ namespace ContactDynamics
   void
   Simulator<dim>::interpolate_initial_state()
   {
-    const unsigned int n_components = fe->n_components();
+    const unsigned int n_components = discretization.fe().n_components();
     std::vector<std::unique_ptr<FunctionParser<dim>>>   functions;
     std::map<types::material_id, const Function<dim> *> u_map, v_map;
     // muparser reads an expression at its first evaluation: evaluate each
@@ -94,11 +94,11 @@ namespace ContactDynamics
             functions.push_back(std::move(f));
           }
     });
-    VectorTools::interpolate_based_on_material_id(MappingQ1<dim>(),
+    VectorTools::interpolate_based_on_material_id(discretization.mapping(),
                                                   dof_handler,
                                                   u_map,
                                                   u);
-    VectorTools::interpolate_based_on_material_id(MappingQ1<dim>(),
+    VectorTools::interpolate_based_on_material_id(discretization.mapping(),
                                                   dof_handler,
                                                   v_map,
                                                   v);
@@ -199,8 +199,14 @@ namespace ContactDynamics
     // consistent from the first step on.
     std::map<types::global_dof_index, double> v_dirichlet, a_dirichlet;
     const double                              h = 1e-4 * integrator.time_step();
-    dirichlet.rates(dof_handler, 0., h, v_dirichlet, a_dirichlet);
-    const auto u_dirichlet = dirichlet.values(dof_handler, 0.);
+    dirichlet.rates(discretization.mapping(),
+                    dof_handler,
+                    0.,
+                    h,
+                    v_dirichlet,
+                    a_dirichlet);
+    const auto u_dirichlet =
+      dirichlet.values(discretization.mapping(), dof_handler, 0.);
     check_initial_inputs(u_dirichlet, v_dirichlet, a_dirichlet, h);
     for (const auto &p : u_dirichlet)
       if (locally_owned.is_element(p.first))
@@ -270,7 +276,7 @@ namespace ContactDynamics
         acceleration_constraints.set_inhomogeneity(p.first, p.second);
       }
     // multipliers have no inertia; the bodies start out of contact
-    std::vector<bool> extra(fe->n_components(), true);
+    std::vector<bool> extra(discretization.fe().n_components(), true);
     for (unsigned int d = 0; d < dim; ++d)
       extra[d] = false;
     for (const auto i :

@@ -83,14 +83,18 @@ namespace ContactDynamics
     watchdog.parse_parameters(prm);
     prm.leave_subsection();
 
+    prm.enter_subsection("Finite element");
+    discretization.parse_parameters(prm);
+    prm.leave_subsection();
     contact = create_contact_formulation<dim>(prm, layout);
-    if (contact)
-      fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(1),
-                                           dim,
-                                           FE_Q<dim>(1),
-                                           contact->n_extra_components());
-    else
-      fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(1), dim);
+    AssertThrow(!contact || discretization.degree() == 1,
+                ExcMessage("'Finite element/Polynomial degree' is " +
+                           std::to_string(discretization.degree()) +
+                           ", and the scene has contact: contact is built "
+                           "for degree 1 only so far. Use degree 1, or a "
+                           "scene without contact (Contact/Formulation = "
+                           "none and no rigid obstacles)."));
+    discretization.create(contact ? contact->n_extra_components() : 0);
 
     prm.enter_subsection("Parallel");
     parallel_parameters.parse_parameters(prm);
@@ -102,9 +106,18 @@ namespace ContactDynamics
     // p4est refines and repartitions in parallel
     if (refinement.adapt_to_contact)
       parallel_parameters.mesh = ParallelParameters::Mesh::distributed;
+    // the transfer before coarsening interpolates d-linearly
+    AssertThrow(!refinement.adapt_to_contact || discretization.degree() == 1,
+                ExcMessage("'Mesh refinement/Adapt to contact' is true with "
+                           "'Finite element/Polynomial degree' = " +
+                           std::to_string(discretization.degree()) +
+                           ": mesh adaptation is built for degree 1 only so "
+                           "far."));
     base_level = parallel_parameters.global_refinements;
 
-    mechanics = std::make_unique<SolidMechanics<dim>>(dof_handler, bodies);
+    mechanics = std::make_unique<SolidMechanics<dim>>(discretization.mapping(),
+                                                      dof_handler,
+                                                      bodies);
     create_mesh();
     dof_handler.reinit(*triangulation);
     history.add(state);
@@ -123,7 +136,7 @@ namespace ContactDynamics
   Simulator<dim>::setup_system(const bool first, const bool sparsity)
   {
     TimerOutput::Scope t(*timer, "setup");
-    dof_handler.distribute_dofs(*fe);
+    dof_handler.distribute_dofs(discretization.fe());
     locally_owned = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant);
     if (contact)
@@ -284,17 +297,22 @@ namespace ContactDynamics
     scene.create_triangulation(*triangulation);
     {
       // refuse a refinement that could not fit in memory before making it
+      // (a cell of degree p holds about p^dim times the nodes)
       const double cells =
         triangulation->n_global_active_cells() *
         std::pow(2., dim * parallel_parameters.global_refinements);
-      AssertThrow(cells <= 1e8,
+      const double allowed = 1e8 / std::pow(discretization.degree(), dim);
+      AssertThrow(cells <= allowed,
                   ExcMessage(
                     "Parallel/Global refinements = " +
                     std::to_string(parallel_parameters.global_refinements) +
                     " would make " + std::to_string(cells) + " cells from " +
                     std::to_string(triangulation->n_global_active_cells()) +
-                    ": at most 1e8 are allowed (about 100 GB). Lower it or "
-                    "the Scene's Refinement factor."));
+                    ": at most " + default_text(allowed) +
+                    " are allowed with Finite element/Polynomial degree = " +
+                    std::to_string(discretization.degree()) +
+                    " (about 100 GB). Lower it or the Scene's Refinement "
+                    "factor."));
     }
     triangulation->refine_global(parallel_parameters.global_refinements);
     if (auto distributed =
@@ -314,37 +332,51 @@ namespace ContactDynamics
     std::vector<std::vector<double>> modes(
       per_body * bodies.size(),
       std::vector<double>(locally_owned.n_elements(), 0.));
+    // at the support points of the displacement's scalar element (on the
+    // cells as the mapping curves them)
+    const FiniteElement<dim>            &fe   = discretization.fe();
+    const FiniteElement<dim>            &base = fe.base_element(0);
+    FEValues<dim>                        fe_values(discretization.mapping(),
+                            base,
+                            Quadrature<dim>(base.get_unit_support_points()),
+                            update_quadrature_points);
+    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-        for (const unsigned int v : cell->vertex_indices())
-          {
-            const Point<dim>  &x     = cell->vertex(v);
-            const unsigned int first = per_body * cell->material_id();
-            std::array<types::global_dof_index, dim> dofs;
-            for (unsigned int d = 0; d < dim; ++d)
-              dofs[d] = cell->vertex_dof_index(v, d);
-            if (!locally_owned.is_element(dofs[0]))
-              continue;
-            std::array<unsigned int, dim> local;
-            for (unsigned int d = 0; d < dim; ++d)
-              local[d] = locally_owned.index_within_set(dofs[d]);
-            for (unsigned int d = 0; d < dim; ++d)
-              modes[first + d][local[d]] = 1;
-            if (dim == 2)
-              {
-                modes[first + 2][local[0]] = -x[1];
-                modes[first + 2][local[1]] = x[0];
-              }
-            else
-              for (unsigned int r = 0; r < 3; ++r)
+        {
+          fe_values.reinit(typename Triangulation<dim>::cell_iterator(cell));
+          cell->get_dof_indices(cell_dofs);
+          for (unsigned int i = 0; i < base.n_dofs_per_cell(); ++i)
+            {
+              const Point<dim>  &x     = fe_values.quadrature_point(i);
+              const unsigned int first = per_body * cell->material_id();
+              std::array<types::global_dof_index, dim> dofs;
+              for (unsigned int d = 0; d < dim; ++d)
+                dofs[d] = cell_dofs[fe.component_to_system_index(d, i)];
+              if (!locally_owned.is_element(dofs[0]))
+                continue;
+              std::array<unsigned int, dim> local;
+              for (unsigned int d = 0; d < dim; ++d)
+                local[d] = locally_owned.index_within_set(dofs[d]);
+              for (unsigned int d = 0; d < dim; ++d)
+                modes[first + d][local[d]] = 1;
+              if (dim == 2)
                 {
-                  // rotation about axis r: e_r x x
-                  const unsigned int a = (r + 1) % 3, b = (r + 2) % 3;
-                  modes[first + dim + r][local[a]] = -x[b];
-                  modes[first + dim + r][local[b]] = x[a];
+                  modes[first + 2][local[0]] = -x[1];
+                  modes[first + 2][local[1]] = x[0];
                 }
-          }
-    newton.set_near_null_space(std::move(modes), fe->n_components());
+              else
+                for (unsigned int r = 0; r < 3; ++r)
+                  {
+                    // rotation about axis r: e_r x x
+                    const unsigned int a = (r + 1) % 3, b = (r + 2) % 3;
+                    modes[first + dim + r][local[a]] = -x[b];
+                    modes[first + dim + r][local[b]] = x[a];
+                  }
+            }
+        }
+    newton.set_near_null_space(std::move(modes),
+                               discretization.fe().n_components());
   }
 
   template <int dim>
@@ -355,7 +387,8 @@ namespace ContactDynamics
     // the multipliers the contact formulation does not use.
     increment_constraints.clear();
     IndexSet prescribed(dof_handler.n_dofs());
-    for (const auto &p : dirichlet.values(dof_handler, 0.))
+    for (const auto &p :
+         dirichlet.values(discretization.mapping(), dof_handler, 0.))
       prescribed.add_index(p.first);
     // a process assembles contact rows of surface nodes whose cells it
     // may not have (on a distributed mesh): it must know which are held
@@ -370,7 +403,7 @@ namespace ContactDynamics
     if (contact)
       contact->add_constraints(increment_constraints);
     {
-      std::vector<bool> displacement(fe->n_components(), false);
+      std::vector<bool> displacement(discretization.fe().n_components(), false);
       for (unsigned int d = 0; d < dim; ++d)
         displacement[d] = true;
       displacement_dofs =

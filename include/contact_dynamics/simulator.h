@@ -9,14 +9,13 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
-#include <deal.II/fe/fe_system.h>
-
 #include <deal.II/lac/affine_constraints.h>
 
 #include <contact_dynamics/contact/contact_formulation.h>
 #include <contact_dynamics/mechanics/bodies.h>
 #include <contact_dynamics/mechanics/body_state.h>
 #include <contact_dynamics/mechanics/boundary_conditions.h>
+#include <contact_dynamics/mechanics/discretization.h>
 #include <contact_dynamics/mechanics/energy_account.h>
 #include <contact_dynamics/mechanics/energy_watchdog.h>
 #include <contact_dynamics/mechanics/solid_mechanics.h>
@@ -337,7 +336,7 @@ namespace ContactDynamics
     ParallelParameters                                parallel_parameters;
     std::unique_ptr<parallel::TriangulationBase<dim>> triangulation;
     std::unique_ptr<ContactFormulation<dim>>          contact;
-    std::unique_ptr<FESystem<dim>>                    fe;
+    Discretization<dim>                               discretization;
     DoFHandler<dim>                                   dof_handler;
     IndexSet                                          locally_owned;
     // owned, neighbours of owned cells, and every contact surface dof

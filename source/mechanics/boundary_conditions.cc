@@ -130,15 +130,17 @@ namespace ContactDynamics
 
   template <int dim>
   std::map<types::global_dof_index, double>
-  DirichletConditions<dim>::values(const DoFHandler<dim> &dof_handler,
+  DirichletConditions<dim>::values(const Mapping<dim>    &mapping,
+                                   const DoFHandler<dim> &dof_handler,
                                    const double           time) const
   {
-    return values(dof_handler, time, "");
+    return values(mapping, dof_handler, time, "");
   }
 
   template <int dim>
   std::map<types::global_dof_index, double>
-  DirichletConditions<dim>::values(const DoFHandler<dim> &dof_handler,
+  DirichletConditions<dim>::values(const Mapping<dim>    &mapping,
+                                   const DoFHandler<dim> &dof_handler,
                                    const double           time,
                                    const std::string     &why) const
   {
@@ -153,7 +155,8 @@ namespace ContactDynamics
           mask[d] = c.mask[d];
         std::map<types::global_dof_index, double> these;
         const PaddedFunction<dim> padded(*c.function, n_components);
-        VectorTools::interpolate_boundary_values(dof_handler,
+        VectorTools::interpolate_boundary_values(mapping,
+                                                 dof_handler,
                                                  c.boundary_id,
                                                  padded,
                                                  these,
@@ -190,6 +193,7 @@ namespace ContactDynamics
   template <int dim>
   void
   DirichletConditions<dim>::rates(
+    const Mapping<dim>                        &mapping,
     const DoFHandler<dim>                     &dof_handler,
     const double                               time,
     const double                               h,
@@ -201,9 +205,9 @@ namespace ContactDynamics
     why << " (the velocity and acceleration of the prescribed motion at t = "
         << time << " are taken by central differences with the step " << h
         << ")";
-    const auto minus = values(dof_handler, time - h, why.str());
-    const auto mid   = values(dof_handler, time);
-    const auto plus  = values(dof_handler, time + h, why.str());
+    const auto minus = values(mapping, dof_handler, time - h, why.str());
+    const auto mid   = values(mapping, dof_handler, time);
+    const auto plus  = values(mapping, dof_handler, time + h, why.str());
     velocity.clear();
     acceleration.clear();
     for (const auto &p : mid)

@@ -33,10 +33,12 @@ namespace ContactDynamics
     template <int dim>
     struct ScratchData
     {
-      explicit ScratchData(const FiniteElement<dim> &fe)
-        : fe(fe)
+      ScratchData(const Mapping<dim> &mapping, const FiniteElement<dim> &fe)
+        : mapping(mapping)
+        , fe(fe)
         , quadrature(fe.degree + 1)
-        , fe_values(fe.base_element(fe.component_to_base_index(0).first),
+        , fe_values(mapping,
+                    fe.base_element(fe.component_to_base_index(0).first),
                     quadrature,
                     update_values | update_gradients | update_JxW_values)
       {
@@ -63,7 +65,7 @@ namespace ContactDynamics
 
       // WorkStream copies the sample for each thread
       ScratchData(const ScratchData &other)
-        : ScratchData(other.fe)
+        : ScratchData(other.mapping, other.fe)
       {}
 
       // the system element's dofs are not those of fe_values
@@ -100,6 +102,7 @@ namespace ContactDynamics
         return JxW_values[q];
       }
 
+      const Mapping<dim>       &mapping;
       const FiniteElement<dim> &fe;
       const QGauss<dim>         quadrature;
       FEValues<dim>             fe_values;
@@ -195,6 +198,7 @@ namespace ContactDynamics
     run_on_cells(const std::vector<Iterator> &cells,
                  const Worker                &worker,
                  const Copier                &copier,
+                 const Mapping<dim>          &mapping,
                  const FiniteElement<dim>    &fe)
     {
       std::exception_ptr first_failure;
@@ -223,7 +227,7 @@ namespace ContactDynamics
           else if (!first_failure)
             copier(copy);
         },
-        ScratchData<dim>(fe),
+        ScratchData<dim>(mapping, fe),
         CopyData<dim>(fe.n_dofs_per_cell()));
       if (first_failure)
         std::rethrow_exception(first_failure);
@@ -233,9 +237,11 @@ namespace ContactDynamics
 
 
   template <int dim>
-  SolidMechanics<dim>::SolidMechanics(const DoFHandler<dim> &dof_handler,
+  SolidMechanics<dim>::SolidMechanics(const Mapping<dim>    &mapping,
+                                      const DoFHandler<dim> &dof_handler,
                                       const std::vector<BodyParameters> &bodies)
-    : dof_handler(dof_handler)
+    : mapping(mapping)
+    , dof_handler(dof_handler)
     , bodies(bodies)
   {
     for (const auto &b : bodies)
@@ -315,7 +321,7 @@ namespace ContactDynamics
     };
 
     const AffineConstraints<double> &constraints = *jacobian_constraints;
-    ScratchData<dim>                 s(dof_handler.get_fe());
+    ScratchData<dim>                 s(mapping, dof_handler.get_fe());
     const unsigned int               n = s.u_dofs.size();
     position_dofs                      = s.u_dofs;
     std::vector<types::global_dof_index> dofs(
@@ -447,7 +453,7 @@ namespace ContactDynamics
     body_force_vector.reinit(locally_owned, comm);
     for (VectorType &v : scratch)
       v.reinit(locally_owned, comm);
-    ScratchData<dim> s(dof_handler.get_fe());
+    ScratchData<dim> s(mapping, dof_handler.get_fe());
     CopyData<dim>    copy(dof_handler.get_fe().n_dofs_per_cell());
     for (const auto &cell : owned_cells)
       {
@@ -544,7 +550,7 @@ namespace ContactDynamics
       else
         constraints.distribute_local_to_global(copy.matrix, copy.dofs, matrix);
     };
-    run_on_cells(owned_cells, worker, copier, dof_handler.get_fe());
+    run_on_cells(owned_cells, worker, copier, mapping, dof_handler.get_fe());
     matrix.compress(VectorOperation::add);
     if (rhs)
       rhs->compress(VectorOperation::add);
@@ -624,7 +630,11 @@ namespace ContactDynamics
                                                copy.dofs,
                                                *tangent);
     };
-    run_on_cells(nonlinear_cells, worker, copier, dof_handler.get_fe());
+    run_on_cells(nonlinear_cells,
+                 worker,
+                 copier,
+                 mapping,
+                 dof_handler.get_fe());
     return energy;
   }
 

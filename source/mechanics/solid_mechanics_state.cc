@@ -93,13 +93,15 @@ namespace ContactDynamics
   std::string
   SolidMechanics<dim>::inverted_corner(const VectorType &u_ghost) const
   {
-    // corners of the trial state's neo-Hookean cells (the trapezoidal
-    // rule's points)
+    // nodes of the trial state's neo-Hookean cells: the corners, and with
+    // degree 2 the mid-edge, mid-face and centre nodes too
     double     smallest = std::numeric_limits<double>::max();
     Point<dim> where;
     const FEValuesExtractors::Vector displacement(0);
-    FEValues<dim>                    fe_values(dof_handler.get_fe(),
-                            QTrapezoid<dim>(),
+    FEValues<dim>                    fe_values(mapping,
+                            dof_handler.get_fe(),
+                            QIterated<dim>(QTrapezoid<1>(),
+                                           dof_handler.get_fe().degree),
                             update_gradients | update_quadrature_points);
     std::vector<Tensor<2, dim>>      gradients(fe_values.n_quadrature_points);
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -132,9 +134,9 @@ namespace ContactDynamics
     if (smallest > 0)
       return "";
     std::ostringstream message;
-    message << "Inverted element: det F = " << smallest
-            << " <= 0 at the corner (reference position " << where
-            << ") of a neo-Hookean element";
+    message << "Inverted element: det F = " << smallest << " <= 0 at the "
+            << (dof_handler.get_fe().degree == 1 ? "corner" : "node")
+            << " (reference position " << where << ") of a neo-Hookean element";
     return message.str();
   }
 
@@ -148,7 +150,8 @@ namespace ContactDynamics
     if (has_linear_cells)
       {
         const FEValuesExtractors::Vector     displacement(0);
-        FEValues<dim>                        fe_values(dof_handler.get_fe(),
+        FEValues<dim>                        fe_values(mapping,
+                                dof_handler.get_fe(),
                                 QMidpoint<dim>(),
                                 update_gradients | update_quadrature_points);
         std::vector<SymmetricTensor<2, dim>> strain(1);

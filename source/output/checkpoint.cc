@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -485,6 +486,11 @@ namespace ContactDynamics
       }
     } // namespace
 
+    // entries added after checkpoints were first written, with the value
+    // that older runs had
+    const std::map<std::string, std::string> entries_added_later = {
+      {"Finite element/Polynomial degree", "1"}};
+
     std::vector<std::string>
     changed_entries(const std::string              &old_text,
                     const std::string              &new_text,
@@ -509,8 +515,12 @@ namespace ContactDynamics
               }))
             continue;
           const auto o = old_values.find(name), n = new_values.find(name);
-          const std::string before =
-            o == old_values.end() ? "(none)" : o->second;
+          // a checkpoint older than an entry ran with the entry's default
+          const auto        added  = entries_added_later.find(name);
+          const std::string before = o != old_values.end() ? o->second :
+                                     added != entries_added_later.end() ?
+                                                             added->second :
+                                                             "(none)";
           const std::string after =
             n == new_values.end() ? "(none)" : n->second;
           if (before != after)

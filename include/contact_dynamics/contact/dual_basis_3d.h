@@ -16,47 +16,64 @@ namespace ContactDynamics
       Number xi, eta, weight;
     };
 
+    /** D_j += w N_j and M_jk += w N_j N_k for one point. */
+    template <typename Number, std::size_t n>
+    void
+    add_moments(const std::array<Number, n>          &N,
+                const Number                         &w,
+                std::array<Number, n>                &D,
+                std::array<std::array<Number, n>, n> &M)
+    {
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          D[j] += w * N[j];
+          for (unsigned int k = 0; k < n; ++k)
+            M[j][k] += w * N[j] * N[k];
+        }
+    }
+
     /**
-     * A = D M^-1 from D_jj = integral N_j and M_jk = integral N_j N_k.
+     * A = D M^-1 from D_jj = integral N_j and M_jk = integral N_j N_k, for
+     * a face of n nodes.
      */
-    template <typename Number>
-    std::array<std::array<Number, 4>, 4>
-    dual_from_moments(const std::array<Number, 4>         &D,
-                      std::array<std::array<Number, 4>, 4> M)
+    template <typename Number, std::size_t n>
+    std::array<std::array<Number, n>, n>
+    dual_from_moments(const std::array<Number, n>         &D,
+                      std::array<std::array<Number, n>, n> M)
     {
       // M^-1 by Gauss-Jordan elimination with partial pivoting on values
-      std::array<std::array<Number, 4>, 4> inverse{};
-      for (unsigned int j = 0; j < 4; ++j)
-        for (unsigned int k = 0; k < 4; ++k)
+      std::array<std::array<Number, n>, n> inverse{};
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int k = 0; k < n; ++k)
           inverse[j][k] = Number(j == k ? 1. : 0.);
-      for (unsigned int c = 0; c < 4; ++c)
+      for (unsigned int c = 0; c < n; ++c)
         {
           unsigned int pivot = c;
-          for (unsigned int r = c + 1; r < 4; ++r)
+          for (unsigned int r = c + 1; r < n; ++r)
             if (std::abs(value_of(M[r][c])) > std::abs(value_of(M[pivot][c])))
               pivot = r;
           std::swap(M[c], M[pivot]);
           std::swap(inverse[c], inverse[pivot]);
           const Number diagonal = M[c][c];
-          for (unsigned int k = 0; k < 4; ++k)
+          for (unsigned int k = 0; k < n; ++k)
             {
               M[c][k] /= diagonal;
               inverse[c][k] /= diagonal;
             }
-          for (unsigned int r = 0; r < 4; ++r)
+          for (unsigned int r = 0; r < n; ++r)
             if (r != c)
               {
                 const Number factor = M[r][c];
-                for (unsigned int k = 0; k < 4; ++k)
+                for (unsigned int k = 0; k < n; ++k)
                   {
                     M[r][k] -= factor * M[c][k];
                     inverse[r][k] -= factor * inverse[c][k];
                   }
               }
         }
-      std::array<std::array<Number, 4>, 4> a;
-      for (unsigned int j = 0; j < 4; ++j)
-        for (unsigned int k = 0; k < 4; ++k)
+      std::array<std::array<Number, n>, n> a;
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int k = 0; k < n; ++k)
           a[j][k] = D[j] * inverse[j][k];
       return a;
     }
@@ -77,15 +94,7 @@ namespace ContactDynamics
         row.fill(Number(0.));
       D.fill(Number(0.));
       for (const auto &q : points)
-        {
-          const auto N = shape(q.xi, q.eta);
-          for (unsigned int j = 0; j < 4; ++j)
-            {
-              D[j] += q.weight * N[j];
-              for (unsigned int k = 0; k < 4; ++k)
-                M[j][k] += q.weight * N[j] * N[k];
-            }
-        }
+        add_moments(shape(q.xi, q.eta), q.weight, D, M);
       return dual_from_moments(D, M);
     }
 

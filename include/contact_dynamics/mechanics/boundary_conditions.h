@@ -5,6 +5,7 @@
 #include <deal.II/dofs/dof_handler.h>
 
 #include <deal.II/fe/component_mask.h>
+#include <deal.II/fe/mapping.h>
 
 #include <contact_dynamics/scenes/scene_layout.h>
 
@@ -45,14 +46,17 @@ namespace ContactDynamics
      * finite throws a message naming the entry, the surface and the time.
      */
     std::map<types::global_dof_index, double>
-    values(const DoFHandler<dim> &dof_handler, const double time) const;
+    values(const Mapping<dim>    &mapping,
+           const DoFHandler<dim> &dof_handler,
+           const double           time) const;
 
     /**
      * Velocity and acceleration of the prescribed motion at time t, by
      * central differences in time with step h.
      */
     void
-    rates(const DoFHandler<dim>                     &dof_handler,
+    rates(const Mapping<dim>                        &mapping,
+          const DoFHandler<dim>                     &dof_handler,
           const double                               time,
           const double                               h,
           std::map<types::global_dof_index, double> &velocity,
@@ -61,7 +65,8 @@ namespace ContactDynamics
   private:
     /** As values(); `why` adds to the message why the time was asked for. */
     std::map<types::global_dof_index, double>
-    values(const DoFHandler<dim> &dof_handler,
+    values(const Mapping<dim>    &mapping,
+           const DoFHandler<dim> &dof_handler,
            const double           time,
            const std::string     &why) const;
 

@@ -5,6 +5,8 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
+#include <deal.II/fe/mapping.h>
+
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -43,7 +45,9 @@ namespace ContactDynamics
   class SolidMechanics
   {
   public:
-    SolidMechanics(const DoFHandler<dim>             &dof_handler,
+    /** The cells' geometry is that of `mapping`. */
+    SolidMechanics(const Mapping<dim>                &mapping,
+                   const DoFHandler<dim>             &dof_handler,
                    const std::vector<BodyParameters> &bodies);
 
     /**
@@ -135,6 +139,13 @@ namespace ContactDynamics
     double
     damping_product(const VectorType &v1, const VectorType &v2) const;
 
+    /** The geometry of the cells. */
+    const Mapping<dim> &
+    get_mapping() const
+    {
+      return mapping;
+    }
+
     const Material<dim> &
     material(const types::material_id id) const
     {
@@ -208,6 +219,7 @@ namespace ContactDynamics
     const VectorType &
     owned(const VectorType &x, VectorType &scratch) const;
 
+    const Mapping<dim>                         &mapping;
     const DoFHandler<dim>                      &dof_handler;
     const std::vector<BodyParameters>          &bodies;
     std::vector<std::unique_ptr<Material<dim>>> materials;

@@ -139,7 +139,9 @@ namespace ContactDynamics
     /**
      * The entries of two parameter files as ParameterHandler prints them
      * (ShortPRM) that differ, as 'Section/Entry: old -> new', leaving out
-     * those whose name starts with one of `allowed`.
+     * those whose name starts with one of `allowed`. An entry added to the
+     * program after `old_text` was written counts there with the value
+     * the older program had (Finite element/Polynomial degree: 1).
      */
     std::vector<std::string>
     changed_entries(const std::string              &old_text,

@@ -1,0 +1,49 @@
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping_q.h>
+
+#include <contact_dynamics/mechanics/discretization.h>
+
+namespace ContactDynamics
+{
+  template <int dim>
+  void
+  Discretization<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Polynomial degree",
+      std::to_string(Discretization<dim>().polynomial_degree),
+      Patterns::Integer(1, 2),
+      "Degree p of the Lagrange elements of the bodies, 1 or 2: FE_Q(p) for "
+      "the displacement (2: 9-node quadrilaterals, 27-node hexahedra) with "
+      "a mapping of the same degree, so that with 2 the cells at the curved "
+      "surfaces of the built-in scenes (the Hertz cylinder and sphere, the "
+      "ironing tools) are curved as well (Gmsh meshes carry no curved "
+      "description and stay straight). On the same mesh degree 2 has about 2^dim "
+      "times the unknowns of degree 1 (4 in 2-D, 8 in 3-D) and 1.8 (2-D) or "
+      "2.4 (3-D) times the matrix entries per row (doc/accuracy-vs-cost.md "
+      "says what each degree costs and buys). One degree for all bodies. "
+      "Contact and Mesh refinement/Adapt to contact are built for degree 1 "
+      "only so far (refused with 2).");
+  }
+
+  template <int dim>
+  void
+  Discretization<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    polynomial_degree = prm.get_integer("Polynomial degree");
+  }
+
+  template <int dim>
+  void
+  Discretization<dim>::create(const unsigned int n_extra)
+  {
+    const FE_Q<dim> q(polynomial_degree);
+    element      = n_extra > 0 ?
+                     std::make_unique<FESystem<dim>>(q, dim, q, n_extra) :
+                     std::make_unique<FESystem<dim>>(q, dim);
+    cell_mapping = std::make_unique<MappingQ<dim>>(polynomial_degree);
+  }
+
+  template class Discretization<2>;
+  template class Discretization<3>;
+} // namespace ContactDynamics
