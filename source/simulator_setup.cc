@@ -87,13 +87,6 @@ namespace ContactDynamics
     discretization.parse_parameters(prm);
     prm.leave_subsection();
     contact = create_contact_formulation<dim>(prm, layout);
-    AssertThrow(!contact || discretization.degree() == 1,
-                ExcMessage("'Finite element/Polynomial degree' is " +
-                           std::to_string(discretization.degree()) +
-                           ", and the scene has contact: contact is built "
-                           "for degree 1 only so far. Use degree 1, or a "
-                           "scene without contact (Contact/Formulation = "
-                           "none and no rigid obstacles)."));
     discretization.create(contact ? contact->n_extra_components() : 0);
 
     prm.enter_subsection("Parallel");

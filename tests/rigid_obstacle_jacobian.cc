@@ -10,7 +10,10 @@
 // persistency rows of held nodes, with the obstacle's velocity) and with
 // Coulomb friction (mu = 0.3, random tangential multipliers so that some
 // active nodes stick and some slip: the slip rates relative to the moving
-// obstacle, the nodal tangents of its normal).
+// obstacle, the nodal tangents of its normal). Repeated with elements of
+// degree 2 (issue 41): the bent bottom is then a curved 3-node or 9-node
+// face, its mid-side and centre nodes are contact nodes, and the mortar
+// patch is integrated on the curved face with its own dual basis.
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
 
@@ -27,7 +30,8 @@ namespace
   std::string
   parameters(const std::string &formulation,
              const std::string &scheme,
-             const bool         friction)
+             const bool         friction,
+             const unsigned int degree)
   {
     const bool three   = dim == 3;
     const bool dynamic = scheme != "quasi-static";
@@ -35,6 +39,10 @@ namespace
     // active, farther out (x = 1/3) they are 0.03 away
     const std::string z = three ? ", -0.5" : "";
     return "set Dimension = " + std::to_string(dim) + R"(
+subsection Finite element
+  set Polynomial degree = )" +
+           std::to_string(degree) + R"(
+end
 subsection Scene
   set Scene = block
   subsection Block
@@ -107,13 +115,15 @@ end
   check(const std::string &formulation,
         const std::string &scheme,
         const bool         held,
-        const bool         friction)
+        const bool         friction,
+        const unsigned int degree = 1)
   {
     const std::string name = std::to_string(dim) + "-D " + formulation + ", " +
-                             scheme + (friction ? ", friction" : "");
+                             scheme + (friction ? ", friction" : "") +
+                             (degree == 2 ? ", degree 2 (curved faces)" : "");
     ParameterHandler prm;
     read_test_parameters("obstacle_jacobian.prm",
-                         parameters<dim>(formulation, scheme, friction),
+                         parameters<dim>(formulation, scheme, friction, degree),
                          prm);
     std::ostringstream              screen;
     ContactDynamics::Simulator<dim> simulator(prm, screen);
@@ -193,5 +203,10 @@ main()
       check<2>(formulation, "quasi-static", false, true);
       check<3>(formulation, "quasi-static", false, false);
       check<3>(formulation, "newmark", true, true);
+      check<2>(formulation, "quasi-static", false, false, 2);
+      check<2>(formulation, "newmark", true, false, 2);
+      check<2>(formulation, "quasi-static", false, true, 2);
+      check<3>(formulation, "quasi-static", false, false, 2);
+      check<3>(formulation, "newmark", true, true, 2);
     }
 }

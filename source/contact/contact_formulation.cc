@@ -491,6 +491,21 @@ namespace ContactDynamics
                     " coordinates; with Dimension = " + std::to_string(dim) +
                     " give " + (dim == 2 ? "'x, y'." : "'x, y, z'.")));
 
+    prm.enter_subsection("Finite element");
+    const auto degree = prm.get_integer("Polynomial degree");
+    prm.leave_subsection();
+    if (contact.formulation != ContactParameters::Formulation::none)
+      for (const ContactPair &pair : contact.pairs)
+        AssertThrow(degree == 1 || pair.obstacle >= 0,
+                    ExcMessage(
+                      "'Finite element/Polynomial degree' is " +
+                      std::to_string(degree) + ", and the contact pair '" +
+                      pair.name +
+                      "' is between two meshed surfaces: with degree 2, "
+                      "contact is built for pairs against rigid obstacles "
+                      "only so far (Contact/Rigid obstacles). Use degree 1, "
+                      "or a rigid obstacle as the primary side."));
+
     switch (contact.formulation)
       {
         case ContactParameters::Formulation::mortar:

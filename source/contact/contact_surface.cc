@@ -1,24 +1,64 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/fe/fe.h>
+#include <deal.II/fe/mapping_q.h>
 
 #include <contact_dynamics/contact/clipping_geometry.h>
 #include <contact_dynamics/contact/contact_surface.h>
+#include <contact_dynamics/contact/quadratic_face.h>
 #include <contact_dynamics/parallel.h>
 
 #include <algorithm>
 #include <map>
+#include <memory>
 
 namespace ContactDynamics
 {
   namespace
   {
     /**
+     * Per face of the reference cell, the indices (in the base element)
+     * of the nodes of a face of degree 2 in the order of
+     * QuadraticFace::node_coordinates(), and their unit-cell points.
+     */
+    template <int dim>
+    std::vector<std::vector<std::pair<unsigned int, Point<dim>>>>
+    quadratic_face_nodes(const FiniteElement<dim> &base)
+    {
+      const auto &support = base.get_unit_support_points();
+      std::vector<std::vector<std::pair<unsigned int, Point<dim>>>> result(
+        GeometryInfo<dim>::faces_per_cell);
+      for (unsigned int f = 0; f < GeometryInfo<dim>::faces_per_cell; ++f)
+        for (const auto &s : QuadraticFace::node_coordinates<dim>())
+          {
+            // the bilinear map of the face's vertices
+            Point<dim> p;
+            for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_face;
+                 ++v)
+              {
+                double N = 1;
+                for (unsigned int k = 0; k < dim - 1; ++k)
+                  N *= (v >> k) & 1 ? s[k] : 1 - s[k];
+                p += N * GeometryInfo<dim>::unit_cell_vertex(
+                           GeometryInfo<dim>::face_to_cell_vertices(f, v));
+              }
+            unsigned int i = 0;
+            while (i < support.size() && support[i].distance(p) > 1e-12)
+              ++i;
+            AssertThrow(i < support.size(), ExcInternalError());
+            result[f].emplace_back(i, p);
+          }
+      return result;
+    }
+
+    /**
      * The records of the faces of the locally owned cells on the surfaces
      * `ids`, oriented there: the nodes' coordinates, their dofs, depth,
-     * and whether the face's normal by its node order points into the cell
-     * (then the order is reversed).
+     * and whether the face's normal by its vertex order points into the
+     * cell (then the order is reversed). With degree 2 every node of the
+     * face, placed by a mapping of that degree.
      */
     template <int dim>
     Message
@@ -26,9 +66,15 @@ namespace ContactDynamics
                        const std::vector<types::boundary_id> &ids,
                        const unsigned int                     n_node_components)
     {
-      const auto            &fe  = dof_handler.get_fe();
-      constexpr unsigned int n_v = ContactSurface<dim>::nodes_per_face;
-      Message                records;
+      const auto            &fe        = dof_handler.get_fe();
+      constexpr unsigned int n_v       = ContactSurface<dim>::nodes_per_face;
+      const bool             quadratic = fe.degree == 2;
+      const auto nodes = quadratic ? quadratic_face_nodes(fe.base_element(0)) :
+                                     decltype(quadratic_face_nodes(fe)){};
+      // (only degree 2 places nodes inside the cell's vertices)
+      const std::unique_ptr<Mapping<dim>> mapping =
+        quadratic ? std::make_unique<MappingQ<dim>>(2) : nullptr;
+      Message                              records;
       std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -53,13 +99,24 @@ namespace ContactDynamics
                 else
                   n = cross_product_3d(t,
                                        cell->vertex(v[2]) - cell->vertex(v[0]));
+                // (node index in the base element, position)
+                std::vector<std::pair<unsigned int, Point<dim>>> face_nodes;
                 for (const unsigned int cell_vertex : v)
+                  face_nodes.emplace_back(cell_vertex,
+                                          cell->vertex(cell_vertex));
+                if (quadratic)
+                  for (unsigned int k = n_v; k < nodes[f].size(); ++k)
+                    face_nodes.emplace_back(
+                      nodes[f][k].first,
+                      mapping->transform_unit_to_real_cell(cell,
+                                                           nodes[f][k].second));
+                for (const auto &node : face_nodes)
                   for (unsigned int d = 0; d < dim; ++d)
-                    records.write(cell->vertex(cell_vertex)[d]);
-                for (const unsigned int cell_vertex : v)
+                    records.write(node.second[d]);
+                for (const auto &node : face_nodes)
                   for (unsigned int c = 0; c < n_node_components; ++c)
                     records.write_index(
-                      cell_dofs[fe.component_to_system_index(c, cell_vertex)]);
+                      cell_dofs[fe.component_to_system_index(c, node.first)]);
                 records.write(cell->measure() / cell->face(f)->measure());
                 records.write_index(
                   n * (cell->face(f)->center() - cell->center()) < 0);
@@ -96,7 +153,51 @@ namespace ContactDynamics
             weights[face[v]] += q.weight * N[v];
         }
     }
+
+    /**
+     * The integrals of N_a over the curved face of degree 2 whose nodes
+     * are at x; three Gauss points per direction integrate the quadratic
+     * N_a times a smooth area element.
+     */
+    template <int dim>
+    std::array<double, QuadraticFace::n_nodes<dim>>
+    quadratic_face_integrals(
+      const std::array<Tensor<1, dim>, QuadraticFace::n_nodes<dim>> &x)
+    {
+      std::array<double, QuadraticFace::n_nodes<dim>> integrals{};
+      const QGauss<dim - 1>                           quadrature(3);
+      for (unsigned int q = 0; q < quadrature.size(); ++q)
+        {
+          const auto   shape = QuadraticFace::shape<dim>(quadrature.point(q));
+          const double JxW   = quadrature.weight(q) *
+                             QuadraticFace::area_element<dim>(shape.dN, x);
+          for (unsigned int a = 0; a < integrals.size(); ++a)
+            integrals[a] += shape.N[a] * JxW;
+        }
+      return integrals;
+    }
   } // namespace
+
+  template <int dim>
+  double
+  ContactSurface<dim>::current_weight(
+    const unsigned int                   node,
+    const TrilinosWrappers::MPI::Vector &u) const
+  {
+    Assert(degree == 2, ExcNotImplemented());
+    double weight = 0;
+    for (const unsigned int f : node_faces[node])
+      {
+        std::array<Tensor<1, dim>, QuadraticFace::n_nodes<dim>> x;
+        for (unsigned int a = 0; a < x.size(); ++a)
+          x[a] = position(face_nodes[f][a], u);
+        const auto integrals = quadratic_face_integrals<dim>(x);
+        for (unsigned int a = 0; a < x.size(); ++a)
+          if (face_nodes[f][a] == node)
+            weight += integrals[a];
+      }
+    return weight;
+  }
 
   template <int dim>
   void
@@ -107,6 +208,7 @@ namespace ContactDynamics
     reference.clear();
     dofs.clear();
     faces.clear();
+    face_nodes.clear();
     node_faces.clear();
     reference_weight.clear();
     depth.clear();
@@ -116,20 +218,23 @@ namespace ContactDynamics
     // distributed mesh. A record is the nodes' coordinates, their dofs,
     // depth, and whether the face's normal by its node order points into
     // the cell (then the order is reversed).
-    constexpr unsigned int n_v = nodes_per_face;
+    degree = dof_handler.get_fe().degree;
+    AssertThrow(degree <= 2, ExcNotImplemented());
+    const unsigned int n_v =
+      degree == 1 ? nodes_per_face : QuadraticFace::n_nodes<dim>;
     // nodes are numbered in the order they first appear; a node is known
     // by its first dof
     std::map<types::global_dof_index, unsigned int> dof_to_node;
     const auto read_face = [&](Message &record) {
-      std::array<Point<dim>, n_v> x;
+      std::vector<Point<dim>> x(n_v);
       for (auto &point : x)
         for (unsigned int d = 0; d < dim; ++d)
           point[d] = record.read();
-      std::array<std::vector<types::global_dof_index>, n_v> node_dofs;
+      std::vector<std::vector<types::global_dof_index>> node_dofs(n_v);
       for (auto &list : node_dofs)
         for (unsigned int c = 0; c < n_node_components; ++c)
           list.push_back(record.read_index());
-      std::array<unsigned int, n_v> face_nodes;
+      std::vector<unsigned int> nodes(n_v);
       for (unsigned int v = 0; v < n_v; ++v)
         {
           auto it = dof_to_node.find(node_dofs[v][0]);
@@ -140,15 +245,22 @@ namespace ContactDynamics
               dofs.push_back(node_dofs[v]);
               node_faces.emplace_back();
             }
-          face_nodes[v] = it->second;
+          nodes[v] = it->second;
         }
       depth.push_back(record.read());
       // reversed: in 3-D, exchanging nodes 1 and 2 exchanges xi and eta
       if (record.read_index() != 0)
-        std::swap(face_nodes[0 + (dim == 3)], face_nodes[1 + (dim == 3)]);
-      for (const unsigned int node : face_nodes)
+        for (const auto &[a, b] : QuadraticFace::reversal_swaps<dim>())
+          if (b < n_v)
+            std::swap(nodes[a], nodes[b]);
+      for (const unsigned int node : nodes)
         node_faces[node].push_back(faces.size());
-      faces.push_back(face_nodes);
+      std::array<unsigned int, nodes_per_face> vertices;
+      std::copy(nodes.begin(),
+                nodes.begin() + nodes_per_face,
+                vertices.begin());
+      faces.push_back(vertices);
+      face_nodes.push_back(nodes);
     };
     gather_messages(dof_handler.get_communicator(),
                     owned_face_records(dof_handler, ids, n_node_components),
@@ -158,8 +270,19 @@ namespace ContactDynamics
                     });
 
     reference_weight.assign(reference.size(), 0.);
-    for (const auto &face : faces)
-      add_face_weights(reference, face, reference_weight);
+    if (degree == 1)
+      for (const auto &face : faces)
+        add_face_weights(reference, face, reference_weight);
+    else
+      for (const auto &face : face_nodes)
+        {
+          std::array<Tensor<1, dim>, QuadraticFace::n_nodes<dim>> x;
+          for (unsigned int a = 0; a < x.size(); ++a)
+            x[a] = reference[face[a]];
+          const auto integrals = quadratic_face_integrals<dim>(x);
+          for (unsigned int a = 0; a < x.size(); ++a)
+            reference_weight[face[a]] += integrals[a];
+        }
     if (dim == 2)
       for (const auto &nf : node_faces)
         AssertThrow(nf.size() <= 2,

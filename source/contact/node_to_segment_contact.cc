@@ -93,7 +93,9 @@ namespace ContactDynamics
     // 2-D: the change of the length around the node (3-D:
     // node_to_segment_contact_3d.cc)
     const auto &surface = pair.secondary;
-    double      current = 0;
+    if (surface.degree == 2)
+      return surface.reference_weight[node] / surface.current_weight(node, u);
+    double current = 0;
     for (const unsigned int face : surface.node_faces[node])
       {
         double length;

@@ -292,7 +292,9 @@ namespace ContactDynamics
     // reference configuration (reference_weight is integral N_j, which
     // differs from that on faces that are not parallelograms)
     const auto &surface = pair.secondary;
-    double      current = 0, reference = 0;
+    if (surface.degree == 2)
+      return surface.reference_weight[node] / surface.current_weight(node, u);
+    double current = 0, reference = 0;
     for (const unsigned int face : surface.node_faces[node])
       {
         const auto &f       = surface.faces[face];

@@ -11,6 +11,7 @@
 #include <contact_dynamics/contact/contact_ad.h>
 #include <contact_dynamics/contact/mortar_contact.h>
 #include <contact_dynamics/contact/node_to_segment_contact.h>
+#include <contact_dynamics/contact/quadratic_face.h>
 #include <contact_dynamics/contact/surface_geometry_3d.h>
 
 #include <array>
@@ -50,25 +51,39 @@ namespace ContactDynamics
         }
     }
 
-    /** Shape functions of a face on [0,1]^(dim-1), lexicographic. */
-    template <int dim, typename Number>
-    std::array<Number, nodes_per_face<dim>>
+    /**
+     * Shape functions of a face with n nodes on [0,1]^(dim-1): the vertices
+     * lexicographic, then (degree 2) as in QuadraticFace.
+     */
+    template <int dim, unsigned int n, typename Number>
+    std::array<Number, n>
     face_shape(const Point<dim - 1> &q)
     {
-      if constexpr (dim == 2)
+      if constexpr (n != nodes_per_face<dim>)
+        {
+          const auto            N = QuadraticFace::shape<dim>(q).N;
+          std::array<Number, n> result;
+          for (unsigned int j = 0; j < n; ++j)
+            result[j] = Number(N[j]);
+          return result;
+        }
+      else if constexpr (dim == 2)
         return {{Number(1. - q[0]), Number(q[0])}};
       else
         return ClippingGeometry::shape(Number(q[0]), Number(q[1]));
     }
 
     /** The area (length) element of a face at q. */
-    template <int dim, typename Number>
+    template <int dim, unsigned int n, typename Number>
     Number
-    area_element(const std::array<Vector<dim, Number>, nodes_per_face<dim>> &x,
-                 const Point<dim - 1>                                       &q)
+    area_element(const std::array<Vector<dim, Number>, n> &x,
+                 const Point<dim - 1>                     &q)
     {
       using std::sqrt;
-      if constexpr (dim == 2)
+      if constexpr (n != nodes_per_face<dim>)
+        return QuadraticFace::area_element<dim>(QuadraticFace::shape<dim>(q).dN,
+                                                x);
+      else if constexpr (dim == 2)
         {
           const Vector<2, Number> t = x[1] - x[0];
           return sqrt(t * t);
@@ -82,10 +97,9 @@ namespace ContactDynamics
     }
 
     /** The integrals of one secondary face against an obstacle. */
-    template <int dim, typename Number>
+    template <int dim, unsigned int n, typename Number>
     struct FaceSums
     {
-      static constexpr unsigned int              n = nodes_per_face<dim>;
       std::array<Number, n>                      gap, weight, gap_rate;
       std::array<std::array<Number, dim - 1>, n> slip_rate;
       std::array<Vector<dim, Number>, n>         friction_force;
@@ -99,20 +113,17 @@ namespace ContactDynamics
      * int psi_j (v - v_obstacle).t_j and the friction forces
      * int N_i sum_j psi_j lambda_t,j t_j.
      */
-    template <int dim, typename Number>
-    FaceSums<dim, Number>
+    template <int dim, unsigned int n, typename Number>
+    FaceSums<dim, n, Number>
     face_sums(const RigidObstacle<dim>                     &obstacle,
               const typename RigidObstacle<dim>::Placement &place,
-              const std::array<Vector<dim, Number>, nodes_per_face<dim>> &x,
-              const std::array<Vector<dim, Number>, nodes_per_face<dim>> *v,
-              const std::array<std::array<Vector<dim, Number>, dim - 1>,
-                               nodes_per_face<dim>>                      *t,
-              const std::array<std::array<Number, dim - 1>, nodes_per_face<dim>>
-                                    *lambda_t,
-              const QGauss<dim - 1> &quadrature)
+              const std::array<Vector<dim, Number>, n>     &x,
+              const std::array<Vector<dim, Number>, n>     *v,
+              const std::array<std::array<Vector<dim, Number>, dim - 1>, n> *t,
+              const std::array<std::array<Number, dim - 1>, n> *lambda_t,
+              const QGauss<dim - 1>                            &quadrature)
     {
-      constexpr unsigned int n = nodes_per_face<dim>;
-      FaceSums<dim, Number>  sums;
+      FaceSums<dim, n, Number> sums;
       for (unsigned int j = 0; j < n; ++j)
         {
           sums.gap[j] = sums.weight[j] = sums.gap_rate[j] = Number(0.);
@@ -129,8 +140,8 @@ namespace ContactDynamics
       for (unsigned int q = 0; q < quadrature.size(); ++q)
         {
           JxW[q] =
-            quadrature.weight(q) * area_element<dim>(x, quadrature.point(q));
-          const auto N = face_shape<dim, Number>(quadrature.point(q));
+            quadrature.weight(q) * area_element<dim, n>(x, quadrature.point(q));
+          const auto N = face_shape<dim, n, Number>(quadrature.point(q));
           for (unsigned int j = 0; j < n; ++j)
             {
               D[j] += N[j] * JxW[q];
@@ -139,7 +150,7 @@ namespace ContactDynamics
             }
         }
       std::array<std::array<Number, n>, n> A;
-      if constexpr (dim == 2)
+      if constexpr (n == 2)
         {
           const Number det = M[0][0] * M[1][1] - M[0][1] * M[1][0];
           A                = {{{{D[0] * M[1][1] / det, -D[0] * M[0][1] / det}},
@@ -150,7 +161,7 @@ namespace ContactDynamics
 
       for (unsigned int q = 0; q < quadrature.size(); ++q)
         {
-          const auto N = face_shape<dim, Number>(quadrature.point(q));
+          const auto N = face_shape<dim, n, Number>(quadrature.point(q));
           std::array<Number, n> psi;
           Vector<dim, Number>   xq;
           for (unsigned int j = 0; j < n; ++j)
@@ -202,10 +213,9 @@ namespace ContactDynamics
      * Whether a face outside the obstacle turns its outward normal away
      * from it (the back of a body).
      */
-    template <int dim, typename PairData>
+    template <int dim, typename PairData, std::size_t n>
     bool
-    faces_away(const PairData                                    &pair,
-               const std::array<Point<dim>, nodes_per_face<dim>> &x)
+    faces_away(const PairData &pair, const std::array<Point<dim>, n> &x)
     {
       Tensor<1, dim> outward;
       Point<dim>     center;
@@ -231,21 +241,19 @@ namespace ContactDynamics
     // `face` of `s` against the obstacle at `place`, with their
     // derivatives weighted with the multipliers, hessian[i n + l] = sum_j
     // lambda_j d direction[i][j]/du_l: second derivatives in the positions
-    template <int dim, typename Face>
+    template <int dim, unsigned int n, typename Face>
     void
-    obstacle_directions(
-      const RigidObstacle<dim>                             &obstacle,
-      const typename RigidObstacle<dim>::Placement         &place,
-      const ContactSurface<dim>                            &s,
-      const Face                                           &face,
-      const TrialState                                     &state,
-      const std::vector<types::global_dof_index>           &unknowns,
-      const QGauss<dim - 1>                                &quadrature,
-      const std::array<double, nodes_per_face<dim>>        &lambda,
-      std::vector<std::array<double, nodes_per_face<dim>>> &direction,
-      std::vector<double>                                  &hessian)
+    obstacle_directions(const RigidObstacle<dim>                     &obstacle,
+                        const typename RigidObstacle<dim>::Placement &place,
+                        const ContactSurface<dim>                    &s,
+                        const Face                                   &face,
+                        const TrialState                             &state,
+                        const std::vector<types::global_dof_index>   &unknowns,
+                        const QGauss<dim - 1>              &quadrature,
+                        const std::array<double, n>        &lambda,
+                        std::vector<std::array<double, n>> &direction,
+                        std::vector<double>                &hessian)
     {
-      constexpr unsigned int n           = nodes_per_face<dim>;
       constexpr unsigned int n_positions = n * dim;
       ContactAD::dispatch_second(n_positions, [&](const auto zero) {
         using AD2   = std::decay_t<decltype(zero)>;
@@ -259,13 +267,13 @@ namespace ContactDynamics
                 s.reference[face[a]][d] + state.u(unknowns[i]);
               x[a][d] = AD2(n_positions, i, Inner(n_positions, i, value));
             }
-        const auto sums = face_sums<dim, AD2>(obstacle,
-                                              place,
-                                              x,
-                                              nullptr,
-                                              nullptr,
-                                              nullptr,
-                                              quadrature);
+        const auto sums = face_sums<dim, n, AD2>(obstacle,
+                                                 place,
+                                                 x,
+                                                 nullptr,
+                                                 nullptr,
+                                                 nullptr,
+                                                 quadrature);
         for (unsigned int i = 0; i < n_positions; ++i)
           {
             std::array<Inner, n> d;
@@ -353,6 +361,114 @@ namespace ContactDynamics
 
 
 
+  namespace
+  {
+    /**
+     * The mortar patch of face e of the pair's secondary surface, whose
+     * faces have n nodes, against the obstacle: with the unknowns of
+     * obstacle_patch_unknowns() and `rates` if the complementarity holds
+     * gap rates.
+     */
+    template <int dim, unsigned int n, typename PairData>
+    void
+    assemble_obstacle_face(PairData                                   &pair,
+                           const unsigned int                          e,
+                           const TrialState                           &state,
+                           const std::vector<types::global_dof_index> &unknowns,
+                           const QGauss<dim - 1> &quadrature,
+                           const bool             rates,
+                           PatchForces           &forces)
+    {
+      constexpr unsigned int n_positions = n * dim;
+      const auto            &s           = pair.secondary;
+      const auto            &face        = s.face_nodes[e];
+      {
+        std::array<Point<dim>, n> x;
+        for (unsigned int a = 0; a < n; ++a)
+          x[a] = s.position(face[a], state.u);
+        if (faces_away<dim>(pair, x))
+          return;
+      }
+      const bool friction = pair.friction_coefficient > 0;
+      // gaps, weights, rates and friction forces with first derivatives
+      std::array<double, n> lambda;
+      ContactAD::dispatch(unknowns.size(), [&](const auto zero) {
+        using AD = std::decay_t<decltype(zero)>;
+        ContactAD::NodeVariables<dim, AD> variables(unknowns, state);
+        std::array<Vector<dim, AD>, n>    x, v;
+        for (unsigned int a = 0; a < n; ++a)
+          variables.add(s, face[a], x[a], v[a]);
+        std::array<std::array<AD, dim - 1>, n> lambda_t;
+        for (unsigned int a = 0; a < n; ++a)
+          lambda[a] = variables.multiplier().val();
+        for (unsigned int k = 0; k < dim - 1; ++k)
+          for (unsigned int a = 0; a < n; ++a)
+            lambda_t[a][k] = variables.multiplier();
+        std::array<std::array<Vector<dim, AD>, dim - 1>, n> t;
+        for (unsigned int a = 0; a < n && friction; ++a)
+          {
+            Vector<dim, AD> normal;
+            pair.obstacle->signed_distance(pair.trial_place, x[a], normal);
+            t[a] = node_tangents<dim>(Vector<dim, AD>(-normal),
+                                      pair.tangent_axis[face[a]]);
+          }
+        const auto sums =
+          face_sums<dim, n, AD>(*pair.obstacle,
+                                pair.trial_place,
+                                x,
+                                rates || friction ? &v : nullptr,
+                                friction ? &t : nullptr,
+                                friction ? &lambda_t : nullptr,
+                                quadrature);
+        for (unsigned int a = 0; a < n; ++a)
+          {
+            const unsigned int j = face[a];
+            ContactAD::add_to(pair.gap[j], sums.gap[a], unknowns);
+            ContactAD::add_to(pair.weight[j], sums.weight[a], unknowns);
+            // (+: the rate of phi is (v - v_o).grad phi = -(v - v_o).n_s)
+            ContactAD::add_to(pair.gap_rate[j], sums.gap_rate[a], unknowns);
+            for (unsigned int k = 0; k < dim - 1; ++k)
+              ContactAD::add_to(pair.slip_rate[j][k],
+                                sums.slip_rate[a][k],
+                                unknowns);
+            if (friction)
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  const AD &f = sums.friction_force[a][d];
+                  forces.add(s.dofs[j][d],
+                             f.val(),
+                             ContactAD::derivatives(f, unknowns));
+                  forces.add_tangential(s.dofs[j][d], f.val());
+                }
+          }
+      });
+
+      // the normal force -sum_j lambda_j w_j d(g_j / w_j)/du (as for the
+      // meshed pairs) with its derivatives: second derivatives in the
+      // positions
+      std::vector<std::array<double, n>> direction(n_positions);
+      std::vector<double>                hessian(n_positions * n_positions);
+      obstacle_directions<dim, n>(*pair.obstacle,
+                                  pair.trial_place,
+                                  s,
+                                  face,
+                                  state,
+                                  unknowns,
+                                  quadrature,
+                                  lambda,
+                                  direction,
+                                  hessian);
+      forces.add_normal_rows(unknowns,
+                             lambda,
+                             direction,
+                             hessian,
+                             [](const unsigned int,
+                                typename PatchForces::Derivatives &) {});
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   MortarContact<dim>::assemble_obstacle_patch(PairData          &pair,
@@ -360,96 +476,28 @@ namespace ContactDynamics
                                               const TrialState  &state,
                                               PatchForces       &forces)
   {
-    constexpr unsigned int n           = nodes_per_face<dim>;
-    constexpr unsigned int n_positions = n * dim;
-    const auto            &s           = pair.secondary;
-    const auto            &face        = s.faces[e];
-    {
-      std::array<Point<dim>, n> x;
-      for (unsigned int a = 0; a < n; ++a)
-        x[a] = s.position(face[a], state.u);
-      if (faces_away<dim>(pair, x))
-        return;
-    }
-    // the signed distance is curved: more points than the meshed pairs
-    const QGauss<dim - 1> quadrature(quadrature_points + 2);
-    const auto            unknowns = this->obstacle_patch_unknowns(pair, e);
-    const bool            friction = pair.friction_coefficient > 0;
+    const auto unknowns = this->obstacle_patch_unknowns(pair, e);
     const bool rates = this->complementarity.holds_contact() && state.dynamic;
-
-    // gaps, weights, rates and friction forces with first derivatives
-    std::array<double, n> lambda;
-    ContactAD::dispatch(unknowns.size(), [&](const auto zero) {
-      using AD = std::decay_t<decltype(zero)>;
-      ContactAD::NodeVariables<dim, AD> variables(unknowns, state);
-      std::array<Vector<dim, AD>, n>    x, v;
-      for (unsigned int a = 0; a < n; ++a)
-        variables.add(s, face[a], x[a], v[a]);
-      std::array<std::array<AD, dim - 1>, n> lambda_t;
-      for (unsigned int a = 0; a < n; ++a)
-        lambda[a] = variables.multiplier().val();
-      for (unsigned int k = 0; k < dim - 1; ++k)
-        for (unsigned int a = 0; a < n; ++a)
-          lambda_t[a][k] = variables.multiplier();
-      std::array<std::array<Vector<dim, AD>, dim - 1>, n> t;
-      for (unsigned int a = 0; a < n && friction; ++a)
-        {
-          Vector<dim, AD> normal;
-          pair.obstacle->signed_distance(pair.trial_place, x[a], normal);
-          t[a] = node_tangents<dim>(Vector<dim, AD>(-normal),
-                                    pair.tangent_axis[face[a]]);
-        }
-      const auto sums = face_sums<dim, AD>(*pair.obstacle,
-                                           pair.trial_place,
-                                           x,
-                                           rates || friction ? &v : nullptr,
-                                           friction ? &t : nullptr,
-                                           friction ? &lambda_t : nullptr,
-                                           quadrature);
-      for (unsigned int a = 0; a < n; ++a)
-        {
-          const unsigned int j = face[a];
-          ContactAD::add_to(pair.gap[j], sums.gap[a], unknowns);
-          ContactAD::add_to(pair.weight[j], sums.weight[a], unknowns);
-          // (+: the rate of phi is (v - v_o).grad phi = -(v - v_o).n_s)
-          ContactAD::add_to(pair.gap_rate[j], sums.gap_rate[a], unknowns);
-          for (unsigned int k = 0; k < dim - 1; ++k)
-            ContactAD::add_to(pair.slip_rate[j][k],
-                              sums.slip_rate[a][k],
-                              unknowns);
-          if (friction)
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                const AD &f = sums.friction_force[a][d];
-                forces.add(s.dofs[j][d],
-                           f.val(),
-                           ContactAD::derivatives(f, unknowns));
-                forces.add_tangential(s.dofs[j][d], f.val());
-              }
-        }
-    });
-
-    // the normal force -sum_j lambda_j w_j d(g_j / w_j)/du (as for the
-    // meshed pairs) with its derivatives: second derivatives in the
-    // positions
-    std::vector<std::array<double, n>> direction(n_positions);
-    std::vector<double>                hessian(n_positions * n_positions);
-    obstacle_directions(*pair.obstacle,
-                        pair.trial_place,
-                        s,
-                        face,
-                        state,
-                        unknowns,
-                        quadrature,
-                        lambda,
-                        direction,
-                        hessian);
-    forces.add_normal_rows(unknowns,
-                           lambda,
-                           direction,
-                           hessian,
-                           [](const unsigned int,
-                              typename PatchForces::Derivatives &) {});
+    // the signed distance is curved: more points than the meshed pairs,
+    // and one more for the products of quadratic shape functions
+    if (pair.secondary.degree == 1)
+      assemble_obstacle_face<dim, nodes_per_face<dim>>(pair,
+                                                       e,
+                                                       state,
+                                                       unknowns,
+                                                       QGauss<dim - 1>(
+                                                         quadrature_points + 2),
+                                                       rates,
+                                                       forces);
+    else
+      assemble_obstacle_face<dim, QuadraticFace::n_nodes<dim>>(
+        pair,
+        e,
+        state,
+        unknowns,
+        QGauss<dim - 1>(quadrature_points + 3),
+        rates,
+        forces);
   }
 
 #define INSTANTIATE(Formulation, dim)                                         \

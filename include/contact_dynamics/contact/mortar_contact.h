@@ -65,8 +65,7 @@ namespace ContactDynamics
     std::vector<unsigned int>
     patch_nodes(const PairData &pair, const unsigned int patch) const override
     {
-      return {pair.secondary.faces[patch].begin(),
-              pair.secondary.faces[patch].end()};
+      return pair.secondary.face_nodes[patch];
     }
 
     std::vector<types::global_dof_index>
