@@ -1,0 +1,223 @@
+#!/usr/bin/env python3
+"""The polynomial degree with contact against rigid obstacles: accuracy
+against unknowns and wall time for elements of degree 1 and 2.
+
+1. Hertz, rigid cylinder (prm/examples/rigid_cylinder.prm: R = 1 into an
+   elastic block, indentation 0.01, quasi-static), on n x n cells with
+   degree 1 and n/2 x n/2 with degree 2 (the same nodes), mortar and
+   node-to-segment. The load at the fixed indentation against a reference
+   (degree 2, mortar, on twice the finest mesh), and the half-width (second
+   moment of the nodal pressures) and the peak nodal pressure against
+   Hertz's values for the run's own load (the block is finite: both
+   degrees converge to about -1.3 % and +1.5 % of Hertz).
+2. Bar impact on a rigid wall (prm/examples/bar_impact_rigid_wall.prm:
+   exact contact force 0.01 on t in (0.1, 2.1]), mortar with persistency:
+   the L2 error of the contact force per step and of its two-step average,
+   the energy change and the contact duration.
+
+Whole runs (process start to exit, one process; the runs write the
+contact CSV, so their output is in the time), medians over the repeats.
+
+  python3 benchmarks/degree_contact.py [--repeats 3]
+
+Writes benchmarks/results/degree_contact.csv and
+doc/degree-contact-table.md.
+"""
+import argparse
+import csv
+import glob
+import math
+import os
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import bench_common  # noqa: E402
+
+REPO = Path(__file__).resolve().parent.parent
+HERTZ = REPO / "prm" / "examples" / "rigid_cylinder.prm"
+BAR = REPO / "prm" / "examples" / "bar_impact_rigid_wall.prm"
+E_STAR = 1000 / (1 - 0.3 ** 2)
+
+
+def execute(exe, work, name, base, changes):
+    prm, out = work / f"{name}.prm", work / name
+    changes = dict(changes, **{"Output/Output directory": str(out)})
+    bench_common.write_prm(prm, base, changes)
+    t0 = time.time()
+    p = subprocess.run([str(exe), str(prm)], capture_output=True, text=True,
+                       cwd=work)
+    wall = time.time() - t0
+    if p.returncode != 0:
+        raise RuntimeError(f"{name}:\n{p.stdout[-2000:]}{p.stderr[-2000:]}")
+    info = bench_common.parse_run_log(p.stdout, ["Newton solve"])
+    names, rows = bench_common.read_csv_rows(out / "statistics.csv")
+    names = [n.split("(")[0].strip() for n in names]
+    stats = [dict(zip(names, r)) for r in rows]
+    return out, stats, dict(wall_s=wall, unknowns=info.get("unknowns", ""))
+
+
+def nodal_weights(xs, degree):
+    """int N_j along a straight surface with the nodes at xs (sorted)."""
+    w = [0.0] * len(xs)
+    if degree == 1:
+        for i in range(len(xs) - 1):
+            w[i] += (xs[i + 1] - xs[i]) / 2
+            w[i + 1] += (xs[i + 1] - xs[i]) / 2
+    else:
+        for i in range(0, len(xs) - 2, 2):
+            length = xs[i + 2] - xs[i]
+            for k, f in ((0, 1 / 6), (1, 4 / 6), (2, 1 / 6)):
+                w[i + k] += f * length
+    return w
+
+
+def hertz(exe, work, degree, n, formulation):
+    out, stats, r = execute(exe, work, f"hertz_{formulation}_q{degree}_{n}",
+                            HERTZ, {
+                                "Finite element/Polynomial degree": degree,
+                                "Scene/Block/Subdivisions": f"{n}, {n}",
+                                "Contact/Formulation": formulation,
+                                "Output/VTU interval": 2})
+    load = float(stats[-1]["roller_force_y"])
+    last = sorted(glob.glob(str(out / "contact_surface-*.csv")))[-1]
+    with open(last) as f:
+        nodes = sorted((float(row["x"]), float(row["pressure"]))
+                       for row in csv.DictReader(f))
+    xs, ps = [x for x, _ in nodes], [p for _, p in nodes]
+    w = nodal_weights(xs, degree)
+    force = sum(p * wj for p, wj in zip(ps, w))
+    moment = sum(p * x * x * wj for p, x, wj in zip(ps, xs, w))
+    a = math.sqrt(4 * load / (math.pi * E_STAR))
+    p0 = 2 * load / (math.pi * a)
+    return dict(r, scene="hertz", formulation=formulation, degree=degree,
+                cells=n, load=load,
+                half_width=math.sqrt(4 * moment / force) / a - 1,
+                peak=max(ps) / p0 - 1)
+
+
+def bar(exe, work, degree, n, dt):
+    _, stats, r = execute(exe, work, f"bar_q{degree}_{n}_{dt}", BAR, {
+        "Finite element/Polynomial degree": degree,
+        "Scene/Block/Subdivisions": f"{n}, {n // 10}",
+        "Time integration/Time step": dt,
+        "Output/VTU interval": 0})
+    exact = 0.01
+    t = [float(s["time"]) for s in stats]
+    f = [abs(float(s["wall_force_x"])) for s in stats]
+    step = avg = 0.0
+    for i in range(1, len(t)):
+        step += (f[i] - (exact if 0.1 < t[i] <= 2.1 + 1e-12 else 0)) ** 2
+        if i > 1:
+            mid = t[i] - dt / 2
+            avg += ((f[i] + f[i - 1]) / 2 -
+                    (exact if 0.1 < mid <= 2.1 else 0)) ** 2
+    norm = exact ** 2 * 2 / dt
+    active = [t[i] for i, s in enumerate(stats)
+              if int(float(s["active_contact_nodes"])) > 0]
+    e0 = 0.5 * 0.1 * 0.1 ** 2
+    e1 = float(stats[-1]["kinetic_energy"]) + float(stats[-1]["elastic_energy"])
+    return dict(r, scene="bar", formulation="mortar", degree=degree, cells=n,
+                dt=dt, force_step=math.sqrt(step / norm),
+                force_avg=math.sqrt(avg / norm), energy=e1 / e0 - 1,
+                duration=active[-1] - active[0] + dt - 2,
+                newton=stats[-1]["cumulative_newton_iterations"])
+
+
+def median(rows, key):
+    return statistics.median(float(r[key]) for r in rows)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--exe", type=Path,
+                    default=REPO / "build" / "contact-dynamics")
+    ap.add_argument("--results", type=Path,
+                    default=REPO / "benchmarks" / "results")
+    ap.add_argument("--table", type=Path,
+                    default=REPO / "doc" / "degree-contact-table.md")
+    args = ap.parse_args()
+    work = Path("/tmp/degree_contact")
+    work.mkdir(exist_ok=True)
+    args.results.mkdir(parents=True, exist_ok=True)
+
+    cells = {1: [20, 40, 80, 160], 2: [10, 20, 40, 80]}
+    reference = hertz(args.exe, work, 2, 160, "mortar")["load"]
+    bars = [(1, 40, 0.0125), (2, 20, 0.0125), (1, 80, 0.00625),
+            (2, 40, 0.00625)]
+    rows = []
+    for repeat in range(args.repeats):
+        # the degrees alternate, so that a drift of the machine hits both
+        for formulation in ("mortar", "nts"):
+            for n1, n2 in zip(cells[1], cells[2]):
+                for degree, n in ((1, n1), (2, n2)):
+                    rows.append(dict(hertz(args.exe, work, degree, n,
+                                           formulation), repeat=repeat))
+                    print(rows[-1], flush=True)
+        for b in bars:
+            rows.append(dict(bar(args.exe, work, *b), repeat=repeat))
+            print(rows[-1], flush=True)
+    keys = sorted({k for r in rows for k in r})
+    with open(args.results / "degree_contact.csv", "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=keys)
+        w.writeheader()
+        w.writerows(rows)
+
+    lines = [
+        "<!-- generated by benchmarks/degree_contact.py; do not edit -->",
+        f"Medians of {args.repeats} run(s) each, one process, 2 cores, "
+        f"load average at the end {os.getloadavg()[0]:.2f}; "
+        f"{time.strftime('%Y-%m-%d')}. Whole run: process start to exit.",
+        "",
+        "**Hertz, rigid cylinder** (`prm/examples/rigid_cylinder.prm`, "
+        "indentation 0.01). Load error against degree 2 mortar on 160 x 160 "
+        f"cells (load {reference:.8g}); half-width and peak nodal pressure "
+        "against Hertz for the run's load (the finite block: both degrees "
+        "tend to about -1.3 % and +1.5 %).",
+        "",
+        "| formulation | degree | cells | unknowns | load error | "
+        "half-width vs Hertz | peak vs Hertz | whole run (s) |",
+        "|---|---|---|---|---|---|---|---|"]
+    for formulation in ("mortar", "nts"):
+        for degree in (1, 2):
+            for n in cells[degree]:
+                mine = [r for r in rows if r["scene"] == "hertz" and
+                        r["formulation"] == formulation and
+                        r["degree"] == degree and r["cells"] == n]
+                m = mine[0]
+                lines.append(
+                    f"| {formulation} | {degree} | {n} x {n} | "
+                    f"{m['unknowns']:,} | "
+                    f"{abs(m['load'] / reference - 1):.1e} | "
+                    f"{m['half_width']:+.2%} | {m['peak']:+.2%} | "
+                    f"{median(mine, 'wall_s'):.3g} |")
+    lines += [
+        "",
+        "**Bar impact on a rigid wall** (`prm/examples/"
+        "bar_impact_rigid_wall.prm`, mortar, persistency): relative L2 "
+        "errors of the contact force against the exact 0.01 per step and "
+        "averaged over two steps, the energy change at t = 3, the contact "
+        "duration minus the exact 2.",
+        "",
+        "| degree | cells | dt | unknowns | force per step | two-step "
+        "average | energy change | duration error | Newton | whole run (s) |",
+        "|---|---|---|---|---|---|---|---|---|---|"]
+    for degree, n, dt in bars:
+        mine = [r for r in rows if r["scene"] == "bar" and
+                r["degree"] == degree and r["cells"] == n]
+        m = mine[0]
+        lines.append(
+            f"| {degree} | {n} x {n // 10} | {dt} | {m['unknowns']:,} | "
+            f"{m['force_step']:.3f} | {m['force_avg']:.3f} | "
+            f"{m['energy']:+.2e} | {m['duration']:+.4f} | {m['newton']} | "
+            f"{median(mine, 'wall_s'):.3g} |")
+    args.table.write_text("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()
