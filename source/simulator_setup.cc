@@ -99,13 +99,6 @@ namespace ContactDynamics
     // p4est refines and repartitions in parallel
     if (refinement.adapt_to_contact)
       parallel_parameters.mesh = ParallelParameters::Mesh::distributed;
-    // the transfer before coarsening interpolates d-linearly
-    AssertThrow(!refinement.adapt_to_contact || discretization.degree() == 1,
-                ExcMessage("'Mesh refinement/Adapt to contact' is true with "
-                           "'Finite element/Polynomial degree' = " +
-                           std::to_string(discretization.degree()) +
-                           ": mesh adaptation is built for degree 1 only so "
-                           "far."));
     base_level = parallel_parameters.global_refinements;
 
     mechanics = std::make_unique<SolidMechanics<dim>>(discretization.mapping(),

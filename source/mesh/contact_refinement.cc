@@ -17,6 +17,7 @@
 #include <contact_dynamics/parameters.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -350,6 +351,113 @@ namespace ContactDynamics
     constraints.distribute(x);
   }
 
+  namespace
+  {
+    /** Degree 1: the children's other vertices, d-linearly. */
+    template <typename Cell>
+    void
+    add_linear_family(const Cell                &cell,
+                      const IndexSet            &fixed,
+                      AffineConstraints<double> &family)
+    {
+      constexpr int dim = Cell::AccessorType::dimension;
+      const auto   &fe  = cell->get_fe();
+      for (unsigned int c = 0; c < cell->n_children(); ++c)
+        for (const unsigned int k : cell->child(c)->vertex_indices())
+          {
+            if (k == c)
+              continue; // the parent's vertex
+            Point<dim> xi;
+            for (unsigned int d = 0; d < dim; ++d)
+              xi[d] = 0.5 * (GeometryInfo<dim>::unit_cell_vertex(c)[d] +
+                             GeometryInfo<dim>::unit_cell_vertex(k)[d]);
+            for (unsigned int comp = 0; comp < fe.n_components(); ++comp)
+              {
+                const auto i = cell->child(c)->vertex_dof_index(k, comp);
+                if (family.is_constrained(i) || fixed.is_element(i))
+                  continue;
+                family.add_line(i);
+                for (const unsigned int p : cell->vertex_indices())
+                  if (const double w =
+                        GeometryInfo<dim>::d_linear_shape_function(xi, p);
+                      std::abs(w) > 1e-14)
+                    family.add_entry(i, cell->vertex_dof_index(p, comp), w);
+              }
+          }
+    }
+
+    /**
+     * Degree 2: the parent's 3^dim nodes are vertices of the children
+     * (coordinates 0, 1/2, 1 in the parent); the children's other nodes
+     * (at 1/4 and 3/4) follow them by the parent's quadratic functions.
+     */
+    template <typename Cell>
+    void
+    add_quadratic_family(const Cell                &cell,
+                         const IndexSet            &fixed,
+                         AffineConstraints<double> &family)
+    {
+      constexpr int dim         = Cell::AccessorType::dimension;
+      const auto   &fe          = cell->get_fe();
+      const auto   &support     = fe.base_element(0).get_unit_support_points();
+      const auto    parent_node = [](const double t) {
+        return std::abs(t - std::round(2 * t) / 2) < 1e-12;
+      };
+      // the 1-D quadratic functions with nodes 0, 1/2, 1 at t
+      const auto lagrange = [](const double t) {
+        return std::array<double, 3>{
+          {2 * (t - 0.5) * (t - 1), -4 * t * (t - 1), 2 * t * (t - 0.5)}};
+      };
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (unsigned int c = 0; c < cell->n_children(); ++c)
+        {
+          const auto child = cell->child(c);
+          child->get_dof_indices(dofs);
+          for (unsigned int b = 0; b < support.size(); ++b)
+            {
+              Point<dim> xi;
+              bool       at_parent_node = true;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  xi[d] = 0.5 * (GeometryInfo<dim>::unit_cell_vertex(c)[d] +
+                                 support[b][d]);
+                  at_parent_node = at_parent_node && parent_node(xi[d]);
+                }
+              if (at_parent_node)
+                continue;
+              std::array<std::array<double, 3>, dim> L;
+              for (unsigned int d = 0; d < dim; ++d)
+                L[d] = lagrange(xi[d]);
+              for (unsigned int comp = 0; comp < fe.n_components(); ++comp)
+                {
+                  const auto i = dofs[fe.component_to_system_index(comp, b)];
+                  if (family.is_constrained(i) || fixed.is_element(i))
+                    continue;
+                  family.add_line(i);
+                  // parent node n: per direction 0, 1/2 or 1 (n_d = 0, 1,
+                  // 2), a vertex of the child on its lower side
+                  for (unsigned int n = 0; n < Utilities::pow(3u, dim); ++n)
+                    {
+                      double       w           = 1;
+                      unsigned int child_index = 0, vertex = 0;
+                      for (unsigned int d = 0, m = n; d < dim; ++d, m /= 3)
+                        {
+                          w *= L[d][m % 3];
+                          child_index |= (m % 3 == 2) << d;
+                          vertex |= (m % 3 != 0) << d;
+                        }
+                      if (std::abs(w) > 1e-14)
+                        family.add_entry(i,
+                                         cell->child(child_index)
+                                           ->vertex_dof_index(vertex, comp),
+                                         w);
+                    }
+                }
+            }
+        }
+    }
+  } // namespace
+
   template <int dim>
   bool
   project_before_coarsening(const DoFHandler<dim, dim>           &dof_handler,
@@ -364,8 +472,8 @@ namespace ContactDynamics
     IndexSet       relevant;
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
 
-    // the removed vertices of the families to be coarsened follow the
-    // parent's vertices (d-linear interpolation in the parent)
+    // the removed nodes of the families to be coarsened follow the
+    // parent's nodes (interpolation of the element's degree in the parent)
     AffineConstraints<double> family(relevant);
     unsigned int              n_families = 0;
     for (const auto &cell : dof_handler.cell_iterators())
@@ -378,28 +486,10 @@ namespace ContactDynamics
         if (!coarsened)
           continue;
         ++n_families;
-        for (unsigned int c = 0; c < cell->n_children(); ++c)
-          for (const unsigned int k : cell->child(c)->vertex_indices())
-            {
-              if (k == c)
-                continue; // the parent's vertex
-              Point<dim> xi;
-              for (unsigned int d = 0; d < dim; ++d)
-                xi[d] = 0.5 * (GeometryInfo<dim>::unit_cell_vertex(c)[d] +
-                               GeometryInfo<dim>::unit_cell_vertex(k)[d]);
-              for (unsigned int comp = 0; comp < fe.n_components(); ++comp)
-                {
-                  const auto i = cell->child(c)->vertex_dof_index(k, comp);
-                  if (family.is_constrained(i) || fixed.is_element(i))
-                    continue;
-                  family.add_line(i);
-                  for (const unsigned int p : cell->vertex_indices())
-                    if (const double w =
-                          GeometryInfo<dim>::d_linear_shape_function(xi, p);
-                        std::abs(w) > 1e-14)
-                      family.add_entry(i, cell->vertex_dof_index(p, comp), w);
-                }
-            }
+        if (fe.degree == 1)
+          add_linear_family(cell, fixed, family);
+        else
+          add_quadratic_family(cell, fixed, family);
       }
     if (Utilities::MPI::sum(n_families, comm) == 0)
       return false;
