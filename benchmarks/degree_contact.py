@@ -9,7 +9,8 @@ against unknowns and wall time for elements of degree 1 and 2.
    (degree 2, mortar, on twice the finest mesh), and the half-width (second
    moment of the nodal pressures) and the peak nodal pressure against
    Hertz's values for the run's own load (the block is finite: both
-   degrees converge to about -1.3 % and +1.5 % of Hertz).
+   degrees converge to about -1.3 % and +1.5 % of Hertz). Also adapted
+   to the contact (3 levels from 20 x 20 or 10 x 10 cells).
 2. Bar impact on a rigid wall (prm/examples/bar_impact_rigid_wall.prm:
    exact contact force 0.01 on t in (0.1, 2.1]), mortar with persistency:
    the L2 error of the contact force per step and of its two-step average,
@@ -28,6 +29,7 @@ import csv
 import glob
 import math
 import os
+import re
 import statistics
 import subprocess
 import sys
@@ -54,6 +56,10 @@ def execute(exe, work, name, base, changes):
     if p.returncode != 0:
         raise RuntimeError(f"{name}:\n{p.stdout[-2000:]}{p.stderr[-2000:]}")
     info = bench_common.parse_run_log(p.stdout, ["Newton solve"])
+    # an adapted mesh: the unknowns of the last one
+    changes = re.findall(r"-> (\d+) unknowns", p.stdout)
+    if changes:
+        info["unknowns"] = int(changes[-1])
     names, rows = bench_common.read_csv_rows(out / "statistics.csv")
     names = [n.split("(")[0].strip() for n in names]
     stats = [dict(zip(names, r)) for r in rows]
@@ -75,13 +81,19 @@ def nodal_weights(xs, degree):
     return w
 
 
-def hertz(exe, work, degree, n, formulation):
-    out, stats, r = execute(exe, work, f"hertz_{formulation}_q{degree}_{n}",
-                            HERTZ, {
-                                "Finite element/Polynomial degree": degree,
-                                "Scene/Block/Subdivisions": f"{n}, {n}",
-                                "Contact/Formulation": formulation,
-                                "Output/VTU interval": 2})
+def hertz(exe, work, degree, n, formulation, levels=0):
+    changes = {"Finite element/Polynomial degree": degree,
+               "Scene/Block/Subdivisions": f"{n}, {n}",
+               "Contact/Formulation": formulation,
+               "Output/VTU interval": 2}
+    if levels:
+        changes.update({"Mesh refinement/Adapt to contact": "true",
+                        "Mesh refinement/Maximum levels": levels,
+                        "Mesh refinement/Buffer cells": 8,
+                        "Mesh refinement/Passes per step": 5})
+    out, stats, r = execute(
+        exe, work, f"hertz_{formulation}_q{degree}_{n}_{levels}", HERTZ,
+        changes)
     load = float(stats[-1]["roller_force_y"])
     last = sorted(glob.glob(str(out / "contact_surface-*.csv")))[-1]
     with open(last) as f:
@@ -94,7 +106,7 @@ def hertz(exe, work, degree, n, formulation):
     a = math.sqrt(4 * load / (math.pi * E_STAR))
     p0 = 2 * load / (math.pi * a)
     return dict(r, scene="hertz", formulation=formulation, degree=degree,
-                cells=n, load=load,
+                cells=n, levels=levels, load=load,
                 half_width=math.sqrt(4 * moment / force) / a - 1,
                 peak=max(ps) / p0 - 1)
 
@@ -146,6 +158,8 @@ def main():
     args.results.mkdir(parents=True, exist_ok=True)
 
     cells = {1: [20, 40, 80, 160], 2: [10, 20, 40, 80]}
+    # adapted: from 20 x 20 (degree 1) or 10 x 10 (degree 2) cells, 3 levels
+    adaptive = {1: 20, 2: 10}
     reference = hertz(args.exe, work, 2, 160, "mortar")["load"]
     bars = [(1, 40, 0.0125), (2, 20, 0.0125), (1, 80, 0.00625),
             (2, 40, 0.00625)]
@@ -158,6 +172,10 @@ def main():
                     rows.append(dict(hertz(args.exe, work, degree, n,
                                            formulation), repeat=repeat))
                     print(rows[-1], flush=True)
+            for degree, n in adaptive.items():
+                rows.append(dict(hertz(args.exe, work, degree, n, formulation,
+                                       3), repeat=repeat))
+                print(rows[-1], flush=True)
         for b in bars:
             rows.append(dict(bar(args.exe, work, *b), repeat=repeat))
             print(rows[-1], flush=True)
@@ -179,18 +197,22 @@ def main():
         "against Hertz for the run's load (the finite block: both degrees "
         "tend to about -1.3 % and +1.5 %).",
         "",
-        "| formulation | degree | cells | unknowns | load error | "
+        "| formulation | degree | cells | unknowns (last mesh) | load error | "
         "half-width vs Hertz | peak vs Hertz | whole run (s) |",
         "|---|---|---|---|---|---|---|---|"]
     for formulation in ("mortar", "nts"):
         for degree in (1, 2):
-            for n in cells[degree]:
+            for n, levels in [(n, 0) for n in cells[degree]] + \
+                    [(adaptive[degree], 3)]:
                 mine = [r for r in rows if r["scene"] == "hertz" and
                         r["formulation"] == formulation and
-                        r["degree"] == degree and r["cells"] == n]
+                        r["degree"] == degree and r["cells"] == n and
+                        r["levels"] == levels]
                 m = mine[0]
+                mesh = f"{n} x {n}" + (f" + {levels} levels adapted"
+                                       if levels else "")
                 lines.append(
-                    f"| {formulation} | {degree} | {n} x {n} | "
+                    f"| {formulation} | {degree} | {mesh} | "
                     f"{m['unknowns']:,} | "
                     f"{abs(m['load'] / reference - 1):.1e} | "
                     f"{m['half_width']:+.2%} | {m['peak']:+.2%} | "

@@ -22,8 +22,11 @@ namespace ContactDynamics
       "times the unknowns of degree 1 (4 in 2-D, 8 in 3-D) and 1.8 (2-D) or "
       "2.4 (3-D) times the matrix entries per row (doc/accuracy-vs-cost.md "
       "says what each degree costs and buys). One degree for all bodies. "
-      "Contact and Mesh refinement/Adapt to contact are built for degree 1 "
-      "only so far (refused with 2).");
+      "With 2, contact works against rigid obstacles (Contact/Rigid "
+      "obstacles; every node of a contact face, mid-side and centre nodes "
+      "too, is a contact node, both formulations) and with Mesh "
+      "refinement/Adapt to contact; a pair of two meshed surfaces is "
+      "refused with 2 so far.");
   }
 
   template <int dim>
