@@ -112,7 +112,7 @@ namespace ContactDynamics
   {
     ClippingGeometry::NodeMap<double> x;
     for (const unsigned int f : surface.node_faces[node])
-      for (const unsigned int k : surface.faces[f])
+      for (const unsigned int k : surface.face_nodes[f])
         x[k] = surface.position(k, u);
     const auto   n = ClippingGeometry::nodal_normal(surface, node, x);
     Tensor<1, 3> result;

@@ -8,6 +8,7 @@
 
 #include <contact_dynamics/contact/clipping_geometry.h>
 #include <contact_dynamics/contact/contact_surface.h>
+#include <contact_dynamics/contact/quadratic_face.h>
 
 #include <algorithm>
 #include <map>
@@ -36,7 +37,32 @@ namespace ContactDynamics
       return result;
     }
 
-    /** The average of the unit corner normals of the faces at a node. */
+    /** The unit normal of the curved face f of degree 2 at its node a. */
+    template <typename Number>
+    Vec3<Number>
+    quadratic_node_normal(const Surface         &s,
+                          const unsigned int     f,
+                          const unsigned int     a,
+                          const NodeMap<Number> &xs)
+    {
+      const auto   q = QuadraticFace::node_coordinates<3>()[a];
+      const auto   G = QuadraticFace::quad_shape_gradients(q[0], q[1]);
+      Vec3<Number> t0, t1;
+      for (unsigned int k = 0; k < 9; ++k)
+        {
+          const auto &x = xs.at(s.face_nodes[f][k]);
+          t0 += Number(G[0][k]) * x;
+          t1 += Number(G[1][k]) * x;
+        }
+      const Vec3<Number> n = cross(t0, t1);
+      return n / norm(n);
+    }
+
+    /**
+     * The average of the unit corner normals of the faces at a node (xs
+     * holds the nodes of those faces: face_nodes). With degree 2 the
+     * normals of the curved faces at the node.
+     */
     template <typename Number>
     Vec3<Number>
     nodal_normal(const Surface         &s,
@@ -46,10 +72,12 @@ namespace ContactDynamics
       std::vector<Vec3<Number>> corners;
       for (const unsigned int f : s.node_faces[node])
         {
-          const auto &nodes = s.faces[f];
+          const auto &nodes = s.face_nodes[f];
           const auto  a =
             std::find(nodes.begin(), nodes.end(), node) - nodes.begin();
-          corners.push_back(corner_normal(face_nodes(s, f, xs), a));
+          corners.push_back(s.degree == 1 ?
+                              corner_normal(face_nodes(s, f, xs), a) :
+                              quadratic_node_normal(s, f, a, xs));
         }
       return averaged_normal(corners);
     }
@@ -86,7 +114,7 @@ namespace ContactDynamics
     {
       NodeMap<double> x;
       for (const unsigned int f : s.node_faces[node])
-        for (const unsigned int k : s.faces[f])
+        for (const unsigned int k : s.face_nodes[f])
           x[k] = s.reference[k];
       const auto   n    = nodal_normal(s, node, x);
       unsigned int axis = 0;
