@@ -12,6 +12,7 @@
 
 #include <deal.II/numerics/rtree.h>
 
+#include <contact_dynamics/contact/quadratic_face.h>
 #include <contact_dynamics/mesh/contact_refinement.h>
 #include <contact_dynamics/parallel.h>
 #include <contact_dynamics/parameters.h>
@@ -403,11 +404,6 @@ namespace ContactDynamics
       const auto    parent_node = [](const double t) {
         return std::abs(t - std::round(2 * t) / 2) < 1e-12;
       };
-      // the 1-D quadratic functions with nodes 0, 1/2, 1 at t
-      const auto lagrange = [](const double t) {
-        return std::array<double, 3>{
-          {2 * (t - 0.5) * (t - 1), -4 * t * (t - 1), 2 * t * (t - 0.5)}};
-      };
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
       for (unsigned int c = 0; c < cell->n_children(); ++c)
         {
@@ -427,7 +423,7 @@ namespace ContactDynamics
                 continue;
               std::array<std::array<double, 3>, dim> L;
               for (unsigned int d = 0; d < dim; ++d)
-                L[d] = lagrange(xi[d]);
+                L[d] = QuadraticFace::lagrange(xi[d]);
               for (unsigned int comp = 0; comp < fe.n_components(); ++comp)
                 {
                   const auto i = dofs[fe.component_to_system_index(comp, b)];
@@ -442,7 +438,8 @@ namespace ContactDynamics
                       unsigned int child_index = 0, vertex = 0;
                       for (unsigned int d = 0, m = n; d < dim; ++d, m /= 3)
                         {
-                          w *= L[d][m % 3];
+                          // (lagrange() orders its nodes 0, 1, 1/2)
+                          w *= L[d][(2 * (m % 3)) % 3];
                           child_index |= (m % 3 == 2) << d;
                           vertex |= (m % 3 != 0) << d;
                         }
