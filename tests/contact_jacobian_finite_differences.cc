@@ -14,7 +14,9 @@
 // cylinder (frictionless, stick, slip) and on the partially covered faces
 // of the 'two blocks' scene (the wide lower block as the secondary side:
 // the primary surface ends inside two of its faces; frictionless, stick,
-// slip).
+// slip). The same contact rows with elements of degree 2 (3-node curved
+// faces: Newton projections onto curved segments, the dual basis of the
+// covered part with the curve's length element).
 #include <deal.II/dofs/dof_tools.h>
 
 #include <contact_dynamics/contact/surface_contact.h>
@@ -31,6 +33,7 @@ namespace
 {
   std::string formulation = "mortar", smoothing = "0", friction = "0";
   double      tangential_scale = 0; // random lambda_t in this range
+  std::string degree           = "1";
 
   std::string
   parameters(const std::string &jacobian,
@@ -323,6 +326,10 @@ subsection Contact
     set Segment quadrature points = 3
   end
 end
+subsection Finite element
+  set Polynomial degree = )" +
+           degree + R"(
+end
 subsection Output
   set Output directory = output_rows
   set VTU interval = 0
@@ -337,7 +344,8 @@ check_contact_rows_all()
   for (const std::string scene : {"hertz", "two blocks"})
     {
       const std::string label =
-        "mortar rows, " + std::string(scene == "hertz" ?
+        "mortar rows" + (degree == "1" ? "" : ", degree " + degree) + ", " +
+        std::string(scene == "hertz" ?
                                         "curved (Hertz)" :
                                         "partially covered (two blocks)");
       check_contact_rows(label + ", frictionless",
@@ -355,7 +363,9 @@ check_contact_rows_all()
     }
   // dynamic, after one step: the persistency rows of held nodes on the
   // curved interface (the Newmark rate of the whole weighted gap)
-  check_contact_rows("mortar rows, curved (Hertz), held (persistency)",
+  check_contact_rows("mortar rows" +
+                       (degree == "1" ? "" : ", degree " + degree) +
+                       ", curved (Hertz), held (persistency)",
                      rows_parameters("hertz", "0", "newmark"),
                      200,
                      0,
@@ -428,6 +438,8 @@ main()
   initlog();
   check_all("mortar: ");
   check_friction("mortar: ");
+  check_contact_rows_all();
+  degree = "2";
   check_contact_rows_all();
   formulation = "nts";
   check_all("nts: ");

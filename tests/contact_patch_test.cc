@@ -15,6 +15,9 @@
 //   refinement; the test records how much, so that a change is noticed.
 // For both: the contact force equals the reactions at the top and at the
 // bottom (force balance), and active nodes do not penetrate.
+// - Dual mortar with elements of degree 2 (3-node faces: the mid-side
+//   nodes are contact nodes too, 15 on the upper block's bottom) reproduces
+//   it to solver tolerance as well.
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
 
@@ -26,17 +29,25 @@ using namespace dealii;
 namespace
 {
   double
-  run(const std::string &formulation)
+  run(const std::string &formulation, const unsigned int degree = 1)
   {
     ParameterHandler prm;
-    read_test_parameters("patch.prm",
-                         patch_test_parameters(formulation, "-1e-3*t", "1"),
-                         prm);
+    read_test_parameters(
+      "patch.prm",
+      patch_test_parameters(formulation,
+                            "-1e-3*t",
+                            "1",
+                            "subsection Finite element\n"
+                            "  set Polynomial degree = " +
+                              std::to_string(degree) + "\nend\n"),
+      prm);
     std::ostringstream            screen;
     ContactDynamics::Simulator<2> simulator(prm, screen);
     simulator.run();
 
-    return check_patch_test(formulation, simulator);
+    return check_patch_test(formulation +
+                              (degree == 2 ? " degree 2" : std::string()),
+                            simulator);
   }
 } // namespace
 
@@ -44,5 +55,12 @@ int
 main()
 {
   initlog();
-  report_patch_tests(run);
+  report_patch_tests([](const std::string &formulation) {
+    return run(formulation);
+  });
+  const double quadratic = run("mortar", 2);
+  check_close("mortar degree 2: max |pressure - E delta| / (E delta)",
+              quadratic,
+              0.,
+              1e-8);
 }

@@ -92,6 +92,8 @@ namespace ContactDynamics
     const unsigned int               face,
     const std::vector<unsigned int> &primary_faces) const
   {
+    if (pair.secondary.degree == 2)
+      return quadratic_patch_unknowns(pair, face, primary_faces);
     const auto                          &s = pair.secondary;
     const auto                          &f = s.faces[face];
     std::vector<types::global_dof_index> unknowns;
@@ -666,6 +668,8 @@ namespace ContactDynamics
                                      const TrialState  &state,
                                      PatchForces       &forces)
   {
+    if (pair.secondary.degree == 2)
+      return assemble_quadratic_patch(pair, e, state, forces);
     const auto unknowns = patch_unknowns(pair, e, pair.candidates[e]);
     ContactAD::dispatch(unknowns.size(), [&](const auto zero) {
       assemble_patch_ad<std::decay_t<decltype(zero)>>(pair,

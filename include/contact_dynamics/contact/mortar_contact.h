@@ -38,6 +38,12 @@ namespace ContactDynamics
     static constexpr double minimum_covered_fraction = 1e-3;
 
     /**
+     * The same for faces of degree 2, whose 3 x 3 mass matrix of a covered
+     * fraction c has a condition number growing like c^-4.
+     */
+    static constexpr double minimum_covered_fraction_2 = 1e-2;
+
+    /**
      * Any weight will do: the dual basis of the covered part keeps the
      * normalized weighted gap of every node of a contributing face bounded
      * (for a linear gap it is the gap at the node), and that node's weight
@@ -98,6 +104,19 @@ namespace ContactDynamics
                       const TrialState                           &state,
                       const std::vector<types::global_dof_index> &unknowns,
                       PatchForces                                &forces);
+
+    /** 2-D faces of degree 2: mortar_contact_quadratic.cc. */
+    std::vector<types::global_dof_index>
+    quadratic_patch_unknowns(
+      const PairData                  &pair,
+      const unsigned int               patch,
+      const std::vector<unsigned int> &primary_faces) const;
+
+    void
+    assemble_quadratic_patch(PairData          &pair,
+                             const unsigned int patch,
+                             const TrialState  &state,
+                             PatchForces       &forces);
 
     unsigned int quadrature_points;
   };
