@@ -32,22 +32,27 @@ VARIANTS = {
                        ("mortar_static", "static mortar"),
                        ("nts", "NTS"),
                        ("mortar_undamped", "stabilized mortar, undamped"),
-                       ("mortar_generalized_alpha", "stabilized mortar, gen.-alpha 0.8, undamped")],
+                       ("mortar_generalized_alpha", "stabilized mortar, gen.-alpha 0.8, undamped"),
+                       ("mortar_stabilized_degree2", "stabilized mortar, degree 2")],
     "ironing": [("mortar", "mortar"),
                 ("nts", "NTS"),
                 ("nts_smoothed", "NTS, smoothed normals"),
                 ("mortar_friction", "mortar, mu = 0.25"),
                 ("nts_smoothed_friction", "NTS smoothed, mu = 0.25"),
                 ("mortar_undamped", "mortar, undamped"),
-                ("mortar_generalized_alpha", "mortar, gen.-alpha 0.8, undamped")],
+                ("mortar_generalized_alpha", "mortar, gen.-alpha 0.8, undamped"),
+                ("mortar_degree2", "mortar, degree 2")],
 }
 STYLE = {"mortar_stabilized": ("tab:blue", "-"), "mortar_static": ("tab:orange", "--"),
          "nts": ("tab:red", ":"), "mortar": ("tab:blue", "-"),
          "nts_smoothed": ("tab:orange", "--"), "mortar_friction": ("tab:green", "-."),
          "nts_smoothed_friction": ("tab:purple", (0, (5, 1, 1, 1))),
          "mortar_undamped": ("tab:gray", (0, (1, 1))),
-         "mortar_generalized_alpha": ("tab:cyan", (0, (3, 1)))}
-FRICTIONLESS = ["mortar", "nts", "nts_smoothed", "mortar_undamped", "mortar_generalized_alpha"]
+         "mortar_generalized_alpha": ("tab:cyan", (0, (3, 1))),
+         "mortar_stabilized_degree2": ("tab:brown", (0, (5, 2))),
+         "mortar_degree2": ("tab:brown", (0, (5, 2)))}
+FRICTIONLESS = ["mortar", "nts", "nts_smoothed", "mortar_undamped", "mortar_generalized_alpha",
+                "mortar_degree2"]
 FRICTION = ["mortar_friction", "nts_smoothed_friction"]
 
 

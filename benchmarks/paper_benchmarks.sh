@@ -54,9 +54,10 @@ fi
 EXTRA_PACKAGES="python3-numpy python3-matplotlib" ./run.sh build
 
 # slowest first, so that parallel runs finish together
-variants=(ironing/nts_smoothed_friction ironing/nts_smoothed ironing/nts
+variants=(ironing/mortar_degree2
+          ironing/nts_smoothed_friction ironing/nts_smoothed ironing/nts
           ironing/mortar_friction ironing/mortar ironing/mortar_generalized_alpha
-          ironing/mortar_undamped
+          ironing/mortar_undamped bouncing_block/mortar_stabilized_degree2
           bouncing_block/mortar_static bouncing_block/nts
           bouncing_block/mortar_stabilized bouncing_block/mortar_generalized_alpha
           bouncing_block/mortar_undamped)

@@ -9,7 +9,8 @@
 // the load. Dual mortar must reproduce the uniform pressure to 1e-8 at
 // every secondary node, with force balance between the contact, the top
 // and the bottom (1e-9); node-to-segment is recorded (its one-pass
-// error), as in contact_patch_test. On two processes (.mpirun=2) the same.
+// error), as in contact_patch_test. Dual mortar with elements of degree 2
+// (3-node faces) too. On two processes (.mpirun=2) the same.
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
 
@@ -21,7 +22,7 @@ using namespace dealii;
 namespace
 {
   double
-  run(const std::string &formulation)
+  run(const std::string &formulation, const unsigned int degree = 1)
   {
     ParameterHandler prm;
     read_test_parameters("patch.prm",
@@ -30,6 +31,10 @@ namespace
                                                "2",
                                                R"(subsection Parallel
   set Mesh = distributed
+end
+subsection Finite element
+  set Polynomial degree = )" + std::to_string(degree) +
+                                                 R"(
 end
 )"),
                          prm);
@@ -53,7 +58,9 @@ end
                Utilities::MPI::sum(hanging, MPI_COMM_WORLD) > 0);
     advance_to(simulator, 2);
 
-    return check_patch_test(formulation, simulator);
+    return check_patch_test(formulation +
+                              (degree == 2 ? " degree 2" : std::string()),
+                            simulator);
   }
 } // namespace
 
@@ -61,5 +68,11 @@ int
 main()
 {
   initlog();
-  report_patch_tests(run);
+  report_patch_tests([](const std::string &formulation) {
+    return run(formulation);
+  });
+  check_close("mortar degree 2: max |pressure - E delta| / (E delta)",
+              run("mortar", 2),
+              0.,
+              1e-8);
 }
