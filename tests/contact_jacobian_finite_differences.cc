@@ -16,7 +16,9 @@
 // the primary surface ends inside two of its faces; frictionless, stick,
 // slip). The same contact rows with elements of degree 2 (3-node curved
 // faces: Newton projections onto curved segments, the dual basis of the
-// covered part with the curve's length element).
+// covered part with the curve's length element); node-to-segment on 3-node
+// primary faces (closest points on the curves, smoothed or not) on the
+// patch-test interface.
 #include <deal.II/dofs/dof_tools.h>
 
 #include <contact_dynamics/contact/surface_contact.h>
@@ -93,6 +95,10 @@ subsection Contact
     set Jacobian = )" +
            jacobian + R"(
   end
+end
+subsection Finite element
+  set Polynomial degree = )" +
+           degree + R"(
 end
 subsection Output
   set Output directory = output_mortar_jacobian
@@ -441,9 +447,19 @@ main()
   check_contact_rows_all();
   degree = "2";
   check_contact_rows_all();
+  check_all("mortar degree 2: ");
+  check_friction("mortar degree 2: ");
+  degree      = "1";
   formulation = "nts";
   check_all("nts: ");
   check_friction("nts: ");
   smoothing = "0.5";
   check_all("nts smoothed: ");
+  // node-to-segment on 3-node curved primary faces
+  smoothing = "0";
+  degree    = "2";
+  check_all("nts degree 2: ");
+  check_friction("nts degree 2: ");
+  smoothing = "0.5";
+  check_all("nts smoothed degree 2: ");
 }

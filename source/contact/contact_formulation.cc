@@ -494,9 +494,8 @@ namespace ContactDynamics
     prm.enter_subsection("Finite element");
     const auto degree = prm.get_integer("Polynomial degree");
     prm.leave_subsection();
-    // degree 2 between two meshed surfaces: 2-D mortar only so far
-    const bool meshed_degree_2 =
-      dim == 2 && contact.formulation == ContactParameters::Formulation::mortar;
+    // degree 2 between two meshed surfaces: 2-D only so far
+    const bool meshed_degree_2 = dim == 2;
     if (contact.formulation != ContactParameters::Formulation::none)
       for (const ContactPair &pair : contact.pairs)
         AssertThrow(degree == 1 || pair.obstacle >= 0 || meshed_degree_2,
@@ -505,11 +504,10 @@ namespace ContactDynamics
                       std::to_string(degree) + ", and the contact pair '" +
                       pair.name +
                       "' is between two meshed surfaces: with degree 2, "
-                      "such pairs are built for the 2-D mortar formulation "
-                      "only so far (node-to-segment and 3-D take pairs "
-                      "against rigid obstacles, Contact/Rigid obstacles). "
-                      "Use degree 1, Formulation = mortar in 2-D, or a rigid "
-                      "obstacle as the primary side."));
+                      "such pairs are built in 2-D only so far (in 3-D, "
+                      "pairs against rigid obstacles, Contact/Rigid "
+                      "obstacles). Use degree 1, or a rigid obstacle as the "
+                      "primary side."));
 
     switch (contact.formulation)
       {

@@ -19,7 +19,7 @@
 #include <contact_dynamics/contact/dual_basis_3d.h>
 #include <contact_dynamics/contact/mortar_contact.h>
 #include <contact_dynamics/contact/mortar_geometry.h>
-#include <contact_dynamics/contact/quadratic_face.h>
+#include <contact_dynamics/contact/quadratic_curve.h>
 
 #include <set>
 
@@ -27,152 +27,10 @@ namespace ContactDynamics
 {
   namespace
   {
+    using MortarGeometry::value_of;
     using SegmentGeometry::cross;
     using SegmentGeometry::Vec;
-    using MortarGeometry::value_of;
-
-    template <typename Number>
-    using Curve = std::array<Vec<Number>, 3>;
-
-    // node a of a 3-node curve sits at xi = -1, 1, 0
-    constexpr double node_xi[3] = {-1., 1., 0.};
-
-    template <typename Number, typename Coefficient>
-    Vec<Number>
-    combine(const Curve<Number> &x, const std::array<Coefficient, 3> &N)
-    {
-      Vec<Number> y;
-      for (unsigned int k = 0; k < 3; ++k)
-        y += Number(N[k]) * x[k];
-      return y;
-    }
-
-    template <typename Number>
-    Vec<double>
-    values(const Vec<Number> &x)
-    {
-      return Vec<double>({value_of(x[0]), value_of(x[1])});
-    }
-
-    template <typename Number>
-    Curve<double>
-    values(const Curve<Number> &x)
-    {
-      return {{values(x[0]), values(x[1]), values(x[2])}};
-    }
-
-    /** Unit outward normal of the curve at xi: the tangent turned clockwise. */
-    template <typename Number>
-    Vec<Number>
-    curve_normal(const Curve<Number> &x, const double xi)
-    {
-      const Vec<Number> t =
-        combine(x, QuadraticFace::line_shape_derivative(xi));
-      Vec<Number> n;
-      n[0] = t[1];
-      n[1] = -t[0];
-      return n / SegmentGeometry::norm(n);
-    }
-
-    /**
-     * The xi on the curve x with nodal normals n whose interpolated normal
-     * line passes through p: cross(x(xi) - p, n(xi)) = 0. `xi` comes in as
-     * the start (the chord's solution).
-     */
-    bool
-    project_onto_curve(const Curve<double> &x,
-                       const Curve<double> &n,
-                       const Vec<double>   &p,
-                       double              &xi)
-    {
-      for (unsigned int it = 0; it < 30; ++it)
-        {
-          const auto        N  = QuadraticFace::line_shape(xi);
-          const auto        dN = QuadraticFace::line_shape_derivative(xi);
-          const Vec<double> d  = combine(x, N) - p;
-          const double      F  = cross(d, combine(n, N));
-          const double      dF =
-            cross(combine(x, dN), combine(n, N)) + cross(d, combine(n, dN));
-          if (std::abs(dF) < 1e-300)
-            return false;
-          const double step = F / dF;
-          xi -= step;
-          if (std::abs(xi) > 1e3)
-            return false;
-          if (std::abs(step) < 1e-13 * (1 + std::abs(xi)))
-            return true;
-        }
-      return false;
-    }
-
-    /**
-     * The same with derivatives: two Newton steps in Number from the
-     * converged xi (the first gives exact first derivatives, the second
-     * exact second derivatives; the value does not change).
-     */
-    template <typename Number>
-    Number
-    project_onto_curve(const Curve<Number> &x,
-                       const Curve<Number> &n,
-                       const Vec<Number>   &p,
-                       const double         xi)
-    {
-      Number result(xi);
-      for (unsigned int step = 0; step < 2; ++step)
-        {
-          const auto        N  = QuadraticFace::line_shape(result);
-          const auto        dN = QuadraticFace::line_shape_derivative(result);
-          const Vec<Number> d  = combine(x, N) - p;
-          const Number      F  = cross(d, combine(n, N));
-          const Number      dF =
-            cross(combine(x, dN), combine(n, N)) + cross(d, combine(n, dN));
-          result -= F / dF;
-        }
-      return result;
-    }
-
-    /**
-     * The eta on the curve y hit by the line through x along the unit
-     * vector n: cross(y(eta) - x, n) = 0, from the chord's solution, by
-     * Newton in double, then one step in Number.
-     */
-    template <typename Number>
-    Number
-    intersect_curve(const Vec<Number>   &x,
-                    const Vec<Number>   &n,
-                    const Curve<Number> &y,
-                    const bool           exact)
-    {
-      const Curve<double> yd = values(y);
-      const Vec<double>   xd = values(x), nd = values(n);
-      double eta = MortarGeometry::intersect_line_with_face(xd, nd, yd[0], yd[1]);
-      for (unsigned int it = 0; it < 30; ++it)
-        {
-          const double G =
-            cross(Vec<double>(combine(yd, QuadraticFace::line_shape(eta)) - xd),
-                  nd);
-          const double dG = cross(
-            combine(yd, QuadraticFace::line_shape_derivative(eta)), nd);
-          if (std::abs(dG) < 1e-300)
-            break;
-          eta -= G / dG;
-          if (std::abs(G / dG) < 1e-14 * (1 + std::abs(eta)) ||
-              std::abs(eta) > 1e3)
-            break;
-        }
-      if (!exact)
-        return Number(eta);
-      // two steps: exact second derivatives
-      Number result(eta);
-      for (unsigned int step = 0; step < 2; ++step)
-        {
-          const auto   N  = QuadraticFace::line_shape(result);
-          const auto   dN = QuadraticFace::line_shape_derivative(result);
-          const Number G  = cross(Vec<Number>(combine(y, N) - x), n);
-          result -= G / cross(combine(y, dN), n);
-        }
-      return result;
-    }
+    using namespace QuadraticCurve;
 
     // a mortar patch of degree 2: node positions and velocities of both
     // sides, the face's nodes, nodal normals and tangents, multipliers
@@ -184,24 +42,14 @@ namespace ContactDynamics
       std::array<Number, 3>               lambda, lambda_t;
     };
 
-    template <typename Number>
-    Curve<Number>
-    face_positions(const std::map<unsigned int, Vec<Number>> &positions,
-                   const std::vector<unsigned int>           &nodes)
-    {
-      return {{positions.at(nodes[0]),
-               positions.at(nodes[1]),
-               positions.at(nodes[2])}};
-    }
-
     // the face's nodes and nodal normals: the average of the unit normals
     // of the curved faces at the node (frozen for approximate Jacobians)
     template <typename Number, typename Surface>
     void
-    set_face_geometry(const Surface           &s,
-                      const unsigned int       e,
-                      const bool               exact,
-                      QuadraticPatch<Number>  &m)
+    set_face_geometry(const Surface          &s,
+                      const unsigned int      e,
+                      const bool              exact,
+                      QuadraticPatch<Number> &m)
     {
       m.x = face_positions(m.xs, s.face_nodes[e]);
       for (unsigned int a = 0; a < 3; ++a)
@@ -271,30 +119,32 @@ namespace ContactDynamics
                    const double                  minimum_covered_fraction,
                    std::vector<unsigned int>    &faces)
     {
-      const auto                       &p  = pair.primary;
-      const Curve<double>               xd = values(m.x), nd = values(m.normal);
-      const Vec<double>                 face_n =
-        SegmentGeometry::face_normal(xd[0], xd[1]);
+      const auto         &p  = pair.primary;
+      const Curve<double> xd = values(m.x), nd = values(m.normal);
+      const Vec<double>   face_n = SegmentGeometry::face_normal(xd[0], xd[1]);
       std::vector<SegmentPoint<Number>> points;
       double                            covered = 0;
       for (const unsigned int pf : pair.candidates[e])
         {
-          const Curve<Number> y = face_positions(m.xp, p.face_nodes[pf]);
+          const Curve<Number> y  = face_positions(m.xp, p.face_nodes[pf]);
           const Curve<double> yd = values(y);
           if (SegmentGeometry::face_normal(yd[0], yd[1]) * face_n >= 0)
             continue;
           double xi[2];
           bool   found = true;
           for (unsigned int a = 0; a < 2 && found; ++a)
-            found =
-              MortarGeometry::project_along_normal_field(
-                xd[0], xd[1], nd[0], nd[1], yd[a], xi[a]) &&
-              project_onto_curve(xd, nd, yd[a], xi[a]);
+            found = MortarGeometry::project_along_normal_field(xd[0],
+                                                               xd[1],
+                                                               nd[0],
+                                                               nd[1],
+                                                               yd[a],
+                                                               xi[a]) &&
+                    project_onto_curve(xd, nd, yd[a], xi[a]);
           if (!found)
             continue;
           const unsigned int first = xi[0] < xi[1] ? 0 : 1;
-          const double lo_v = std::max(-1., xi[first]);
-          const double hi_v = std::min(1., xi[1 - first]);
+          const double       lo_v  = std::max(-1., xi[first]);
+          const double       hi_v  = std::min(1., xi[1 - first]);
           if (hi_v - lo_v < 1e-12)
             continue;
           const Number lo = segment_end(m, lo_v, xi[first], y[first], exact);
@@ -305,14 +155,14 @@ namespace ContactDynamics
           for (unsigned int q = 0; q < gauss.size(); ++q)
             {
               SegmentPoint<Number> point;
-              point.face      = pf;
-              const Number xi_q = lo + (hi - lo) * gauss.point(q)[0];
-              point.N           = QuadraticFace::line_shape(xi_q);
-              const Vec<Number> x  = combine(m.x, point.N);
+              point.face          = pf;
+              const Number xi_q   = lo + (hi - lo) * gauss.point(q)[0];
+              point.N             = QuadraticFace::line_shape(xi_q);
+              const Vec<Number> x = combine(m.x, point.N);
               const Vec<Number> dx =
                 combine(m.x, QuadraticFace::line_shape_derivative(xi_q));
-              point.JxW = gauss.weight(q) * (hi - lo) *
-                          SegmentGeometry::norm(dx);
+              point.JxW =
+                gauss.weight(q) * (hi - lo) * SegmentGeometry::norm(dx);
               point.normal = combine(m.normal, point.N);
               point.normal /= SegmentGeometry::norm(point.normal);
               const Number eta = intersect_curve(x, point.normal, y, exact);
@@ -349,8 +199,13 @@ namespace ContactDynamics
       for (unsigned int j = 0; j < 3; ++j)
         sums.ratio[j] = sums.weight[j] = sums.gap_rate[j] = sums.slip_rate[j] =
           Number(0.);
-      const auto points = segment_points(
-        pair, e, m, gauss, exact, minimum_covered_fraction, sums.faces);
+      const auto points = segment_points(pair,
+                                         e,
+                                         m,
+                                         gauss,
+                                         exact,
+                                         minimum_covered_fraction,
+                                         sums.faces);
       if (points.empty())
         return sums;
       // the dual basis of the covered part: psi_j = D_j (M^-1 N)_j
@@ -365,7 +220,8 @@ namespace ContactDynamics
               M[j][k] += q.N[j] * q.N[k] * q.JxW;
           }
       const auto B = ClippingGeometry::dual_from_moments(
-        std::array<Number, 3>{{Number(1.), Number(1.), Number(1.)}}, M);
+        std::array<Number, 3>{{Number(1.), Number(1.), Number(1.)}},
+        M);
       const auto &face = s.face_nodes[e];
       for (const auto &q : points)
         {
@@ -381,15 +237,16 @@ namespace ContactDynamics
             {
               Vec<Number> v_rel;
               for (unsigned int k = 0; k < 3; ++k)
-                v_rel += q.N[k] * m.vs.at(face[k]) - q.Np[k] * m.vp.at(primary[k]);
+                v_rel +=
+                  q.N[k] * m.vs.at(face[k]) - q.Np[k] * m.vp.at(primary[k]);
               for (unsigned int j = 0; j < 3; ++j)
                 {
                   if (rates)
                     sums.gap_rate[j] -= psi[j] * (v_rel * q.normal) * q.JxW;
                   if (friction)
-                    sums.slip_rate[j] += psi[j] *
-                                         (v_rel * SegmentGeometry::rotate(q.normal)) *
-                                         q.JxW;
+                    sums.slip_rate[j] +=
+                      psi[j] * (v_rel * SegmentGeometry::rotate(q.normal)) *
+                      q.JxW;
                 }
             }
           if (!forces || (exact && !friction))
@@ -530,19 +387,19 @@ namespace ContactDynamics
                          std::vector<std::array<double, 3>> &direction,
                          std::vector<double>                &hessian)
     {
-      using Inner                    = typename AD2::value_type;
-      const unsigned int n_positions = 2 * nodes.size();
-      const unsigned int n_seeded    = seeded.size();
+      using Inner                     = typename AD2::value_type;
+      const unsigned int  n_positions = 2 * nodes.size();
+      const unsigned int  n_seeded    = seeded.size();
       QuadraticPatch<AD2> m;
       for (unsigned int k = 0, v = 0; k < nodes.size(); ++k)
         {
           const auto &surface = nodes[k].first ? pair.secondary : pair.primary;
-          auto       &x = (nodes[k].first ? m.xs : m.xp)[nodes[k].second];
+          auto       &x       = (nodes[k].first ? m.xs : m.xp)[nodes[k].second];
           for (unsigned int d = 0; d < 2; ++d)
             {
-              const unsigned int i     = 2 * k + d;
-              const double       value = surface.reference[nodes[k].second][d] +
-                                   state.u(unknowns[i]);
+              const unsigned int i = 2 * k + d;
+              const double       value =
+                surface.reference[nodes[k].second][d] + state.u(unknowns[i]);
               if (v < n_seeded && seeded[v] == i)
                 x[d] = AD2(n_seeded, v, Inner(n_seeded, v, value)), ++v;
               else
@@ -550,16 +407,16 @@ namespace ContactDynamics
             }
         }
       set_face_geometry(pair.secondary, e, true, m);
-      const auto f = integrate_face(
-        pair, e, m, gauss, false, true, false, minimum_fraction);
+      const auto f =
+        integrate_face(pair, e, m, gauss, false, true, false, minimum_fraction);
       for (unsigned int v = 0; v < n_seeded; ++v)
         {
           std::array<Inner, 3> d;
           for (unsigned int j = 0; j < 3; ++j)
             {
-              d[j] = v < unsigned(f.ratio[j].size()) ?
-                       f.weight[j].val() * f.ratio[j].dx(v) :
-                       Inner(0.);
+              d[j]                    = v < unsigned(f.ratio[j].size()) ?
+                                          f.weight[j].val() * f.ratio[j].dx(v) :
+                                          Inner(0.);
               direction[seeded[v]][j] = d[j].val();
             }
           for (unsigned int w = 0; w < n_seeded; ++w)
@@ -572,6 +429,70 @@ namespace ContactDynamics
             }
         }
     }
+    // quadratic_directions() seeded in the positions the gaps depend on:
+    // the secondary nodes and those of the covering primary faces
+    template <typename PairData>
+    void
+    exact_directions(const PairData                             &pair,
+                     const unsigned int                          e,
+                     const Nodes                                &nodes,
+                     const std::vector<unsigned int>            &covering,
+                     const std::vector<types::global_dof_index> &unknowns,
+                     const TrialState                           &state,
+                     const QGauss<1>                            &gauss,
+                     const double                        minimum_fraction,
+                     const std::array<double, 3>        &lambda,
+                     std::vector<std::array<double, 3>> &direction,
+                     std::vector<double>                &hessian)
+    {
+      const auto                covering_nodes = primary_nodes(pair, covering);
+      std::vector<unsigned int> seeded;
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        if (nodes[k].first || covering_nodes.count(nodes[k].second) > 0)
+          for (unsigned int d = 0; d < 2; ++d)
+            seeded.push_back(2 * k + d);
+      dispatch_second(seeded.size(), [&](const auto zero) {
+        quadratic_directions<std::decay_t<decltype(zero)>>(pair,
+                                                           e,
+                                                           nodes,
+                                                           seeded,
+                                                           unknowns,
+                                                           state,
+                                                           gauss,
+                                                           minimum_fraction,
+                                                           lambda,
+                                                           direction,
+                                                           hessian);
+      });
+    }
+
+    // the face's gaps, weights and rates into the pair's nodes, its
+    // friction rows into `forces`
+    template <typename AD, typename PairData, typename PatchForces>
+    void
+    add_face_sums(PairData                                   &pair,
+                  const unsigned int                          e,
+                  const QuadraticSums<AD>                    &sums,
+                  const std::vector<types::global_dof_index> &unknowns,
+                  PatchForces                                &forces)
+    {
+      for (unsigned int a = 0; a < 3; ++a)
+        {
+          const unsigned int j = pair.secondary.face_nodes[e][a];
+          ContactAD::add_to(pair.gap[j],
+                            AD(sums.weight[a] * sums.ratio[a]),
+                            unknowns);
+          ContactAD::add_to(pair.weight[j], sums.weight[a], unknowns);
+          ContactAD::add_to(pair.gap_rate[j], sums.gap_rate[a], unknowns);
+          ContactAD::add_to(pair.slip_rate[j][0], sums.slip_rate[a], unknowns);
+        }
+      for (const auto &r : sums.rows)
+        forces.add(r.first,
+                   r.second.val(),
+                   ContactAD::derivatives(r.second, unknowns));
+      for (const auto &r : sums.tangential_rows)
+        forces.add_tangential(r.first, r.second);
+    }
   } // namespace
 
 
@@ -583,19 +504,19 @@ namespace ContactDynamics
                                                const TrialState  &state,
                                                PatchForces       &forces)
   {
-    const auto &s        = pair.secondary;
-    const auto &p        = pair.primary;
-    const auto  unknowns = quadratic_patch_unknowns(pair, e, pair.candidates[e]);
-    const bool  exact    = this->complementarity.exact_jacobian;
-    const bool  rates = this->complementarity.holds_contact() && state.dynamic;
+    const auto &s       = pair.secondary;
+    const auto &p       = pair.primary;
+    const auto unknowns = quadratic_patch_unknowns(pair, e, pair.candidates[e]);
+    const bool exact    = this->complementarity.exact_jacobian;
+    const bool rates = this->complementarity.holds_contact() && state.dynamic;
     const QGauss<1> gauss(quadrature_points + 2);
     Nodes           nodes;
     for (const unsigned int n : secondary_nodes(s, e))
       nodes.emplace_back(true, n);
     for (const unsigned int n : primary_nodes(pair, pair.candidates[e]))
       nodes.emplace_back(false, n);
-    const unsigned int    n_positions = 2 * nodes.size();
-    std::array<double, 3> lambda;
+    const unsigned int                 n_positions = 2 * nodes.size();
+    std::array<double, 3>              lambda;
     std::vector<unsigned int>          covering;
     std::vector<std::array<double, 3>> direction(n_positions, {{0., 0., 0.}});
     std::map<types::global_dof_index, typename PatchForces::Derivatives>
@@ -618,25 +539,16 @@ namespace ContactDynamics
       for (unsigned int j = 0; j < 3; ++j)
         lambda[j] = m.lambda[j].val();
       set_face_geometry(s, e, exact, m);
-      const auto sums = integrate_face(
-        pair, e, m, gauss, rates, exact, true, minimum_covered_fraction_2);
-      covering = sums.faces;
-      for (unsigned int a = 0; a < 3; ++a)
-        {
-          const unsigned int j = s.face_nodes[e][a];
-          ContactAD::add_to(pair.gap[j],
-                            AD(sums.weight[a] * sums.ratio[a]),
-                            unknowns);
-          ContactAD::add_to(pair.weight[j], sums.weight[a], unknowns);
-          ContactAD::add_to(pair.gap_rate[j], sums.gap_rate[a], unknowns);
-          ContactAD::add_to(pair.slip_rate[j][0], sums.slip_rate[a], unknowns);
-        }
-      for (const auto &r : sums.rows)
-        forces.add(r.first,
-                   r.second.val(),
-                   ContactAD::derivatives(r.second, unknowns));
-      for (const auto &r : sums.tangential_rows)
-        forces.add_tangential(r.first, r.second);
+      const auto sums = integrate_face(pair,
+                                       e,
+                                       m,
+                                       gauss,
+                                       rates,
+                                       exact,
+                                       true,
+                                       minimum_covered_fraction_2);
+      covering        = sums.faces;
+      add_face_sums(pair, e, sums, unknowns, forces);
       // approximate: the directions from the exact geometry, without their
       // derivatives, and the derivatives of the nodal-normal traction
       if (exact)
@@ -647,39 +559,35 @@ namespace ContactDynamics
             normal_derivatives[r.first].emplace_back(unknowns[l],
                                                      r.second.dx(l));
       set_face_geometry(s, e, true, m);
-      const auto f = integrate_face(
-        pair, e, m, gauss, false, true, false, minimum_covered_fraction_2);
+      const auto f = integrate_face(pair,
+                                    e,
+                                    m,
+                                    gauss,
+                                    false,
+                                    true,
+                                    false,
+                                    minimum_covered_fraction_2);
       for (unsigned int i = 0; i < n_positions; ++i)
         for (unsigned int j = 0; j < 3; ++j)
-          direction[i][j] =
-            f.ratio[j].size() > int(i) ? f.weight[j].val() * f.ratio[j].dx(i) :
-                                         0.;
+          direction[i][j] = f.ratio[j].size() > int(i) ?
+                              f.weight[j].val() * f.ratio[j].dx(i) :
+                              0.;
     });
 
     std::vector<double> hessian(exact ? n_positions * n_positions : 0);
     if (exact && !covering.empty())
       {
-        // the gaps depend on the secondary nodes and the covering faces'
-        const auto covering_nodes = primary_nodes(pair, covering);
-        std::vector<unsigned int> seeded;
-        for (unsigned int k = 0; k < nodes.size(); ++k)
-          if (nodes[k].first || covering_nodes.count(nodes[k].second) > 0)
-            for (unsigned int d = 0; d < 2; ++d)
-              seeded.push_back(2 * k + d);
-        dispatch_second(seeded.size(), [&](const auto zero) {
-          quadratic_directions<std::decay_t<decltype(zero)>>(
-            pair,
-            e,
-            nodes,
-            seeded,
-            unknowns,
-            state,
-            gauss,
-            minimum_covered_fraction_2,
-            lambda,
-            direction,
-            hessian);
-        });
+        exact_directions(pair,
+                         e,
+                         nodes,
+                         covering,
+                         unknowns,
+                         state,
+                         gauss,
+                         minimum_covered_fraction_2,
+                         lambda,
+                         direction,
+                         hessian);
       }
     forces.add_normal_rows(
       unknowns,

@@ -67,6 +67,16 @@ namespace ContactDynamics
     // nodes, in 3-D the faces around every node (its nodal normal)
     const auto            &p = pair.primary;
     std::set<unsigned int> nodes;
+    if (p.degree == 2)
+      {
+        // (2-D) every node of the curves and, smoothed, of their neighbours
+        for (const unsigned int f : faces)
+          for (const unsigned int node : p.faces[f])
+            for (const unsigned int g : p.node_faces[node])
+              if (g == f || smoothing_distance > 0)
+                nodes.insert(p.face_nodes[g].begin(), p.face_nodes[g].end());
+        return nodes;
+      }
     for (const unsigned int f : faces)
       for (const unsigned int node : p.faces[f])
         {
@@ -262,11 +272,11 @@ namespace ContactDynamics
   {
     const auto unknowns = patch_unknowns(pair, j, pair.candidates[j]);
     ContactAD::dispatch(unknowns.size(), [&](const auto zero) {
-      assemble_patch_ad<std::decay_t<decltype(zero)>>(pair,
-                                                      j,
-                                                      state,
-                                                      unknowns,
-                                                      forces);
+      using AD = std::decay_t<decltype(zero)>;
+      if (pair.primary.degree == 2)
+        assemble_quadratic_patch_ad<AD>(pair, j, state, unknowns, forces);
+      else
+        assemble_patch_ad<AD>(pair, j, state, unknowns, forces);
     });
   }
 

@@ -205,6 +205,16 @@ namespace ContactDynamics
                       const std::vector<types::global_dof_index> &unknowns,
                       PatchForces                                &forces);
 
+    /** The same on primary faces of degree 2: node_to_segment_quadratic.cc. */
+    template <typename AD>
+    void
+    assemble_quadratic_patch_ad(
+      PairData                                   &pair,
+      const unsigned int                          node,
+      const TrialState                           &state,
+      const std::vector<types::global_dof_index> &unknowns,
+      PatchForces                                &forces);
+
     double     smoothing_distance;
     FaceMemory face_memory;
     // (face_memory.trial, as the 3-D projection reads it)
