@@ -142,6 +142,8 @@ def variant_label(meta):
         parts.append(f"{int(float(q))} qp")
     if meta.get("scheme") not in (None, "", "newmark"):
         parts.append(f"{meta['scheme']}, undamped")
+    if str(meta.get("degree", "1")) in ("2", "2.0"):
+        parts.append("degree 2")
     if meta.get("problem") == "bouncing_block" and str(meta.get("refinement")) in ("2", "2.0") \
             and meta.get("reference") not in (None, "", "(is a reference)"):
         parts.append("mesh x2")
@@ -196,6 +198,15 @@ def build_runs(mode):
             ch.update({"Scene/Refinement factor": f, "Output/VTU interval": NEVER})
             rid = f"hertz_{form.replace(' ', '_')}_{jac}" + (f"_q{q}" if q else "") + f"_r{f:g}"
             runs.append(Run("hertz", rid, "prm/examples/hertz.prm", ch, meta, keep_surface=True))
+    # elements of degree 2 (issue 41) on half the factor: the same nodes
+    for f in factors:
+        meta = dict(formulation="mortar", stabilization="-", jacobian="exact", quadrature=2,
+                    refinement=f / 2, elements="", dt=0.25, degree=2)
+        ch = formulation_changes("mortar", quadrature=2)
+        ch.update({"Scene/Refinement factor": f / 2, "Output/VTU interval": NEVER,
+                   "Finite element/Polynomial degree": 2})
+        runs.append(Run("hertz", f"hertz_mortar_exact_q2_r{f / 2:g}_p2", "prm/examples/hertz.prm",
+                        ch, meta, keep_surface=True))
 
     # Bar impact: exact 1-D answer
     dts = [0.025, 0.0125, 0.00625] + ([0.003125] if full else [])
@@ -225,6 +236,17 @@ def build_runs(mode):
                    "Output/VTU interval": NEVER})
         runs.append(Run("bar_impact", f"bar_mortar_persistency_ga_n80_dt{dt:g}",
                         "prm/examples/bar_impact.prm", ch, meta, keep_surface=True))
+
+    # degree 2 (issue 41) with half the elements (the same nodes)
+    for n in [10, 20, 40]:
+        for dt in dts:
+            meta = dict(formulation="mortar", stabilization="persistency", jacobian="exact",
+                        quadrature="-", refinement="", elements=n, dt=dt, degree=2)
+            ch = formulation_changes("mortar", stabilization="persistency", c_n=10)
+            ch.update({"Scene/Bar impact/Elements along bar": n, "Time integration/Time step": dt,
+                       "Output/VTU interval": NEVER, "Finite element/Polynomial degree": 2})
+            runs.append(Run("bar_impact", f"bar_mortar_persistency_n{n}_dt{dt:g}_p2",
+                            "prm/examples/bar_impact.prm", ch, meta, keep_surface=True))
 
     # Patch test: one quasi-static step
     for form in ["mortar", "nts"]:
@@ -283,6 +305,16 @@ def build_runs(mode):
         runs.append(Run("bouncing_block", f"bb_mortar_persistency_r2_dt{dt:g}_T{end:g}",
                         "prm/bouncing_block/mortar_stabilized.prm",
                         bb_changes("mortar", "persistency", dt, 2), meta))
+    # degree 2 (issue 41) on half the factor (the same nodes)
+    for dt in bb_dts:
+        meta = dict(formulation="mortar", stabilization="persistency", jacobian="exact",
+                    quadrature="-", refinement=0.5, elements="", dt=dt, end_time=end, degree=2,
+                    reference=f"bbref_mortar_persistency_T{end:g}",
+                    mortar_reference=f"bbref_mortar_persistency_T{end:g}")
+        runs.append(Run("bouncing_block", f"bb_mortar_persistency_dt{dt:g}_T{end:g}_p2",
+                        "prm/bouncing_block/mortar_stabilized.prm",
+                        dict(bb_changes("mortar", "persistency", dt, 0.5),
+                             **{"Finite element/Polynomial degree": 2}), meta))
     # generalized-alpha without Rayleigh damping, against its own fine
     # reference (the undamped model: the numerical damping vanishes with dt)
     ga_ref = f"bbref_mortar_persistency_ga_T{end:g}"
@@ -331,6 +363,14 @@ def build_runs(mode):
         rid = f"iron_{form.replace(' ', '_')}_r{f:g}_dt{dt:g}_T{end:g}"
         runs.append(Run("ironing", rid, files[form], iron_changes(dt, f), meta,
                         keep_surface=True))
+    # degree 2 (issue 41) on half the factor (the same nodes)
+    for f in factors:
+        meta = dict(formulation="mortar", stabilization="velocity persistency", jacobian="exact",
+                    quadrature="-", refinement=f / 2, elements="", dt=0.01, end_time=end,
+                    reference=ref_id, degree=2)
+        runs.append(Run("ironing", f"iron_mortar_r{f / 2:g}_dt0.01_T{end:g}_p2", files["mortar"],
+                        dict(iron_changes(0.01, f / 2), **{"Finite element/Polynomial degree": 2}),
+                        meta, keep_surface=True))
     # generalized-alpha without Rayleigh damping, against its own reference
     # (the undamped model, the finest compared mesh, dt 0.005)
     ga = generalized_alpha_changes(["tool", "substrate"])
@@ -515,9 +555,14 @@ def energy_balance_error(stats):
     return float(np.max(np.abs(e)) / scale) if scale > 0 else math.nan
 
 
-def tributary_lengths(x):
-    """Half the distance to the neighbours along x (x sorted)."""
+def tributary_lengths(x, degree=1):
+    """integral N_j along x (x sorted): half the distance to the neighbours,
+    with degree 2 1/6, 4/6, 1/6 of each 3-node face (vertex, mid, vertex)."""
     w = np.zeros_like(x)
+    if degree == 2:
+        for i in range(0, len(x) - 2, 2):
+            w[i:i + 3] += (x[i + 2] - x[i]) * np.array([1 / 6, 4 / 6, 1 / 6])
+        return w
     if len(x) > 1:
         d = np.diff(x)
         w[:-1] += d / 2
@@ -525,7 +570,7 @@ def tributary_lengths(x):
     return w
 
 
-def hertz_errors(directory, stats):
+def hertz_errors(directory, stats, degree=1):
     """Half-width, peak pressure and profile L2 errors against Hertz (as tests/hertz_cylinder.cc)."""
     s, name = last_surface(directory, stats)
     out = {}
@@ -534,7 +579,7 @@ def hertz_errors(directory, stats):
     pair0 = s["pair"] == 0
     order = np.argsort(s["x"][pair0])
     x, p = s["x"][pair0][order], s["pressure"][pair0][order]
-    w = tributary_lengths(x)
+    w = tributary_lengths(x, degree)
     P = abs(stats["contact_force_y"][-1])
     E, nu, R = 1000.0, 0.3, 1.0
     E_star = E / (2 * (1 - nu * nu))
@@ -723,7 +768,7 @@ def collect(runs):
         if st and len(st.get("time", [])) > 1:
             r["err_energy_balance"] = energy_balance_error(st)
             if run.problem == "hertz":
-                r.update(hertz_errors(run.dir, st))
+                r.update(hertz_errors(run.dir, st, int(float(run.meta.get("degree", 1)))))
             elif run.problem == "bar_impact":
                 r.update(bar_errors(run.dir, st, run.meta["dt"]))
             elif run.problem == "patch_test":

@@ -21,6 +21,16 @@
 //
 // On the elastic lower block (the physical punch) the traction is not
 // uniform, but it must be nowhere tensile.
+//
+// With elements of degree 2 (3-node faces) on the rigid foundation, with
+// the upper block shifted by s = 0, 0.03 and -0.01 (its edges at
+// xi = -0.5/0.5, -0.2/0.8 and -0.6/0.4 of the partly covered faces): a
+// vertex whose support is covered from the other end beyond the middle
+// has a covered integral of N_j that is small or negative (0 at xi = 0.5);
+// below 10 % of its whole-face value it leaves the face's multiplier space
+// (mortar_contact_quadratic.cc). Every active node must still carry p to
+// 1e-8, the load must be p times the covered length 0.5 to 1e-9, and no
+// tangential force arises (frictionless).
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
 
@@ -31,9 +41,16 @@ using namespace dealii;
 namespace
 {
   void
-  run(const bool rigid_foundation)
+  run(const bool         rigid_foundation,
+      const unsigned int degree = 1,
+      const double       shift  = 0)
   {
-    const std::string name = rigid_foundation ? "rigid foundation" : "punch";
+    const std::string name =
+      std::string(rigid_foundation ? "rigid foundation" : "punch") +
+      (degree == 2 ? ", degree 2, shift " + std::to_string(shift) : "");
+    std::ostringstream s_stream;
+    s_stream << shift;
+    const std::string s_text = s_stream.str();
     ParameterHandler  prm;
     read_test_parameters("edge.prm",
                          std::string(R"(
@@ -43,13 +60,18 @@ end
 subsection Body upper
   set Young's modulus = 1e6
   set Poisson's ratio = 0
+  set Initial displacement = )" + s_text + R"(; 0
+end
+subsection Finite element
+  set Polynomial degree = )" + std::to_string(degree) +
+                                     R"(
 end
 subsection Body lower
   set Young's modulus = 1e6
   set Poisson's ratio = 0
 end
 subsection Boundary conditions
-  set Dirichlet = lower_bottom: xy: 0; upper_top: y: -1e-3*t; upper_left: x: 0)") +
+  set Dirichlet = lower_bottom: xy: 0; upper_top: y: -1e-3*t; upper_left: x: )" + s_text) +
                            (rigid_foundation ? "; lower_top: xy: 0" : "") +
                            R"(
 end
@@ -91,7 +113,7 @@ end
         const double x = s.reference[j][0];
         lowest         = std::min(lowest, nodes[j].pressure);
         n_active += nodes[j].active;
-        if (x > 0.1 && x < 0.9)
+        if (degree == 2 ? nodes[j].active : (x > 0.1 && x < 0.9))
           {
             ++n_covered;
             worst = std::max(worst, std::abs(nodes[j].pressure - p) / p);
@@ -109,8 +131,15 @@ end
                 1e-12);
     if (rigid_foundation)
       {
-        check_true(name + ": the 4 nodes with covered support are active",
-                   n_active == 4 && n_covered == 4);
+        if (degree == 1)
+          check_true(name + ": the 4 nodes with covered support are active",
+                     n_active == 4 && n_covered == 4);
+        else
+          check_close(name + ": tangential contact force / load",
+                      contact_statistics(*contact).at("contact_force_x") /
+                        (p * 0.5),
+                      0.,
+                      1e-9);
         check_close(name + ": max |lambda_j - p| / p up to the edge",
                     worst,
                     0.,
@@ -136,4 +165,6 @@ main()
   initlog();
   run(true);
   run(false);
+  for (const double shift : {0., 0.03, -0.01})
+    run(true, 2, shift);
 }

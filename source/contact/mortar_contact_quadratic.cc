@@ -132,14 +132,23 @@ namespace ContactDynamics
             continue;
           double xi[2];
           bool   found = true;
+          // (the chord's solution where Newton on the curve fails far
+          // beyond the face's ends, where only its side matters)
           for (unsigned int a = 0; a < 2 && found; ++a)
-            found = MortarGeometry::project_along_normal_field(xd[0],
-                                                               xd[1],
-                                                               nd[0],
-                                                               nd[1],
-                                                               yd[a],
-                                                               xi[a]) &&
-                    project_onto_curve(xd, nd, yd[a], xi[a]);
+            {
+              found = MortarGeometry::project_along_normal_field(xd[0],
+                                                                 xd[1],
+                                                                 nd[0],
+                                                                 nd[1],
+                                                                 yd[a],
+                                                                 xi[a]);
+              const double chord = xi[a];
+              if (found && !project_onto_curve(xd, nd, yd[a], xi[a]))
+                {
+                  xi[a] = chord;
+                  found = std::abs(chord) > 1.5;
+                }
+            }
           if (!found)
             continue;
           const unsigned int first = xi[0] < xi[1] ? 0 : 1;
@@ -181,6 +190,70 @@ namespace ContactDynamics
       return points;
     }
 
+    /**
+     * The multiplier functions N'_j = sum_k T_jk N_k of a face of degree 2
+     * on its covered part. A vertex function is negative on the far half of
+     * its face, so the covered integral D_j = int N_j of a node whose
+     * support is covered from the other end beyond the middle is small or
+     * negative, and its dual function and multiplier blow up (the sum of
+     * the others is then no longer 1). A node whose covered D_j is below
+     * dropped_fraction of its whole-face one leaves the face's multiplier
+     * space: its function is spread onto the nodes kept as they interpolate
+     * a linear function (one node kept: a constant), so that the N'
+     * still sum to 1 and reproduce linear fields, and so do their dual
+     * functions (the patch test up to the edge of the covered part).
+     */
+    template <typename Number>
+    std::array<std::array<double, 3>, 3>
+    multiplier_map(const Curve<Number>                     &x,
+                   const std::vector<SegmentPoint<Number>> &points,
+                   const QGauss<1>                         &gauss)
+    {
+      constexpr double      dropped_fraction = 0.1;
+      const Curve<double>   xd               = values(x);
+      std::array<double, 3> covered{}, whole{};
+      for (const auto &q : points)
+        for (unsigned int j = 0; j < 3; ++j)
+          covered[j] += value_of(q.N[j]) * value_of(q.JxW);
+      for (unsigned int q = 0; q < gauss.size(); ++q)
+        {
+          const double xi = 2. * gauss.point(q)[0] - 1.;
+          const double J  = SegmentGeometry::norm(
+            combine(xd, QuadraticFace::line_shape_derivative(xi)));
+          const auto N = QuadraticFace::line_shape(xi);
+          for (unsigned int j = 0; j < 3; ++j)
+            whole[j] += N[j] * 2. * gauss.weight(q) * J;
+        }
+      std::vector<unsigned int> kept;
+      unsigned int              best = 0;
+      for (unsigned int j = 0; j < 3; ++j)
+        {
+          if (covered[j] >= dropped_fraction * whole[j])
+            kept.push_back(j);
+          if (covered[j] / whole[j] > covered[best] / whole[best])
+            best = j;
+        }
+      if (kept.empty())
+        kept.push_back(best);
+      std::array<std::array<double, 3>, 3> T{};
+      for (const unsigned int j : kept)
+        T[j][j] = 1.;
+      for (unsigned int d = 0; d < 3; ++d)
+        if (T[d][d] == 0)
+          {
+            if (kept.size() == 1)
+              T[kept[0]][d] = 1.;
+            else
+              for (unsigned int a = 0; a < 2; ++a) // (two kept: linear)
+                {
+                  const unsigned int i = kept[a], o = kept[1 - a];
+                  T[i][d] =
+                    (node_xi[d] - node_xi[o]) / (node_xi[i] - node_xi[o]);
+                }
+          }
+      return T;
+    }
+
     template <typename Number, typename PairData>
     QuadraticSums<Number>
     integrate_face(const PairData               &pair,
@@ -208,17 +281,29 @@ namespace ContactDynamics
                                          sums.faces);
       if (points.empty())
         return sums;
-      // the dual basis of the covered part: psi_j = D_j (M^-1 N)_j
+      // the dual basis of the covered part, psi_j = D_j (M^-1 N')_j, for
+      // the multiplier functions N' = T N of the nodes kept (multiplier_map)
+      const auto T = multiplier_map(m.x, points, gauss);
       std::array<std::array<Number, 3>, 3> M;
-      for (auto &row : M)
-        row.fill(Number(0.));
-      for (const auto &q : points)
+      for (unsigned int j = 0; j < 3; ++j)
+        for (unsigned int k = 0; k < 3; ++k) // (identity rows of dropped j)
+          M[j][k] = Number(j == k && T[j][j] == 0 ? 1. : 0.);
+      const auto multipliers = [&](const SegmentPoint<Number> &q) {
+        std::array<Number, 3> Nm;
         for (unsigned int j = 0; j < 3; ++j)
-          {
-            sums.weight[j] += q.N[j] * q.JxW;
-            for (unsigned int k = 0; k < 3; ++k)
-              M[j][k] += q.N[j] * q.N[k] * q.JxW;
-          }
+          Nm[j] = T[j][0] * q.N[0] + T[j][1] * q.N[1] + T[j][2] * q.N[2];
+        return Nm;
+      };
+      for (const auto &q : points)
+        {
+          const auto Nm = multipliers(q);
+          for (unsigned int j = 0; j < 3; ++j)
+            {
+              sums.weight[j] += Nm[j] * q.JxW;
+              for (unsigned int k = 0; k < 3; ++k)
+                M[j][k] += Nm[j] * Nm[k] * q.JxW;
+            }
+        }
       const auto B = ClippingGeometry::dual_from_moments(
         std::array<Number, 3>{{Number(1.), Number(1.), Number(1.)}},
         M);
@@ -226,9 +311,10 @@ namespace ContactDynamics
       for (const auto &q : points)
         {
           std::array<Number, 3> phi, psi;
+          const auto            Nm = multipliers(q);
           for (unsigned int j = 0; j < 3; ++j)
             {
-              phi[j] = B[j][0] * q.N[0] + B[j][1] * q.N[1] + B[j][2] * q.N[2];
+              phi[j] = B[j][0] * Nm[0] + B[j][1] * Nm[1] + B[j][2] * Nm[2];
               psi[j] = sums.weight[j] * phi[j];
               sums.ratio[j] += phi[j] * q.gap * q.JxW;
             }

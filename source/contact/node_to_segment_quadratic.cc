@@ -48,8 +48,11 @@ namespace ContactDynamics
             continue;
           const Vec<double> t        = (y[1] - y[0]) / 2.;
           double            eta_free = (x - (y[0] + y[1]) / 2.) * t / (t * t);
+          // (Newton failed or found a farthest point: the chord's
+          // projection, without derivatives, see below)
+          const double chord = eta_free;
           if (!closest_point(y, x, eta_free))
-            continue;
+            eta_free = chord;
           if (f == previous && std::abs(eta_free) <= 1 + tangential_tolerance)
             {
               best     = f;

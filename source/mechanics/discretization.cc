@@ -24,9 +24,10 @@ namespace ContactDynamics
       "says what each degree costs and buys). One degree for all bodies. "
       "With 2, contact works against rigid obstacles (Contact/Rigid "
       "obstacles; every node of a contact face, mid-side and centre nodes "
-      "too, is a contact node, both formulations) and, in 2-D, with Mesh "
-      "refinement/Adapt to contact; a pair of two meshed surfaces, and "
-      "adaptation to contact in 3-D, are refused with 2 so far.");
+      "too, is a contact node, both formulations), between two meshed "
+      "surfaces in 2-D (3-node curved faces), and in 2-D with Mesh "
+      "refinement/Adapt to contact; in 3-D a pair of two meshed surfaces, "
+      "and adaptation to contact, are refused with 2 so far.");
   }
 
   template <int dim>

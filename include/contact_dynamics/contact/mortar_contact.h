@@ -46,8 +46,10 @@ namespace ContactDynamics
     /**
      * Any weight will do: the dual basis of the covered part keeps the
      * normalized weighted gap of every node of a contributing face bounded
-     * (for a linear gap it is the gap at the node), and that node's weight
-     * is at least minimum_covered_fraction^2 / 2 of the face length.
+     * (for a linear gap it is the gap at the node); that node's weight is
+     * at least minimum_covered_fraction^2 / 2 of the face length (degree
+     * 1) or 10 % of its weight on the whole face (degree 2: a node below
+     * that leaves the face's multipliers, mortar_contact_quadratic.cc).
      */
     double
     minimum_coverage() const override

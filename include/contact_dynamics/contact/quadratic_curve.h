@@ -169,7 +169,7 @@ namespace ContactDynamics
     /**
      * The xi of the point of the curve x closest to p: (x(xi) - p).x'(xi)
      * = 0, by Newton from the chord's projection `xi`; false if Newton
-     * fails.
+     * fails or ends at a largest distance.
      */
     inline bool
     closest_point(const Curve<double> &x, const Vec<double> &p, double &xi)
@@ -187,7 +187,7 @@ namespace ContactDynamics
           if (std::abs(xi) > 1e3)
             return false;
           if (std::abs(F / dF) < 1e-14 * (1 + std::abs(xi)))
-            return true;
+            return dF > 0; // (a closest point, not a farthest one)
         }
       return false;
     }
