@@ -254,6 +254,18 @@ namespace ContactDynamics
       return T;
     }
 
+    /** T N at one point. */
+    template <typename Number>
+    std::array<Number, 3>
+    apply(const std::array<std::array<double, 3>, 3> &T,
+          const std::array<Number, 3>                &N)
+    {
+      std::array<Number, 3> TN;
+      for (unsigned int j = 0; j < 3; ++j)
+        TN[j] = T[j][0] * N[0] + T[j][1] * N[1] + T[j][2] * N[2];
+      return TN;
+    }
+
     template <typename Number, typename PairData>
     QuadraticSums<Number>
     integrate_face(const PairData               &pair,
@@ -289,10 +301,7 @@ namespace ContactDynamics
         for (unsigned int k = 0; k < 3; ++k) // (identity rows of dropped j)
           M[j][k] = Number(j == k && T[j][j] == 0 ? 1. : 0.);
       const auto multipliers = [&](const SegmentPoint<Number> &q) {
-        std::array<Number, 3> Nm;
-        for (unsigned int j = 0; j < 3; ++j)
-          Nm[j] = T[j][0] * q.N[0] + T[j][1] * q.N[1] + T[j][2] * q.N[2];
-        return Nm;
+        return apply(T, q.N);
       };
       for (const auto &q : points)
         {
