@@ -724,7 +724,7 @@ def history_error_avg2(stats, ref, column):
 # ---------------------------------------------------------------------------
 
 COLUMNS = ["run_id", "problem", "formulation", "stabilization", "scheme", "jacobian",
-           "quadrature",
+           "quadrature", "degree",
            "refinement", "elements", "dt", "end_time", "h",
            "err_half_width", "err_peak_pressure", "err_profile_l2",
            "err_duration", "err_energy", "err_force_l2", "err_force_avg2", "energy_change",
@@ -1457,10 +1457,11 @@ def main():
                                     or source.name == f"accuracy_vs_cost_{args.mode}.csv"):
             info = json.loads(info_path.read_text())
             header += ["Mode `%s`, %d runs (%d reused from an earlier run with the same "
-                       "parameters and binary), %.0f s of runs, one at a time (jobs = %d), "
+                       "parameters and binary), %.0f s of runs, %s (jobs = %d), "
                        "finished %s, load average at the end %s." % (
                            info["mode"], info["runs"], info["reused"], info["seconds"],
-                           info["jobs"], info["date"],
+                           "one at a time" if info["jobs"] == 1 else
+                           "%d at a time" % info["jobs"], info["jobs"], info["date"],
                            " ".join("%.2f" % x for x in info["load_average_at_end"])), ""]
         args.doc_tables.parent.mkdir(parents=True, exist_ok=True)
         args.doc_tables.write_text("\n".join(header) + text)
