@@ -1195,7 +1195,10 @@ def plot_pareto(rows, problem, path):
         ax.set_ylabel(error_name(problem, e) + " (relative)")
         ax.grid(True, which="both", alpha=0.3)
     axes[0][0].legend(fontsize=7, loc="best")
-    fig.suptitle(f"{problem.replace('_', ' ')}: accuracy versus cost (2 cores, one run at a time)",
+    info_path = ARGS.results / f"accuracy_run_info_{ARGS.mode}.json"
+    jobs = json.loads(info_path.read_text())["jobs"] if info_path.is_file() else 1
+    fig.suptitle(f"{problem.replace('_', ' ')}: accuracy versus cost (2 cores, "
+                 + ("one run at a time)" if jobs == 1 else f"{jobs} runs at a time)"),
                  fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
