@@ -32,9 +32,11 @@ namespace ContactDynamics
     Vec<Number>
     combine(const Curve<Number> &x, const std::array<Coefficient, 3> &N)
     {
+      // (by component: no temporary AD numbers, which dominated the
+      // second derivatives' cost)
       Vec<Number> y;
-      for (unsigned int k = 0; k < 3; ++k)
-        y += Number(N[k]) * x[k];
+      for (unsigned int d = 0; d < 2; ++d)
+        y[d] = N[0] * x[0][d] + N[1] * x[1][d] + N[2] * x[2][d];
       return y;
     }
 
