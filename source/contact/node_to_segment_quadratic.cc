@@ -104,8 +104,12 @@ namespace ContactDynamics
           const Vec<AD> n_other =
             curve_normal(face_positions(xp, nodes), node_xi[k]);
           const Vec<AD> n_end = curve_normal(y, node_xi[end]);
-          const AD      weight =
-            to_end.val() <= 0 ? AD(1.) : AD((smoothing - to_end) / smoothing);
+          if (to_end.val() <= 0) // beyond the end (the face memory): the mean
+            {
+              normal = AD(0.5) * (n_end + n_other);
+              break;
+            }
+          const AD weight = (smoothing - to_end) / smoothing;
           normal += AD(weight / 2.) * (n_other - n_end);
         }
       return normal / SegmentGeometry::norm(normal);
