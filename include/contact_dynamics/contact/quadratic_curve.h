@@ -68,6 +68,69 @@ namespace ContactDynamics
     }
 
     /**
+     * Newton on a scalar equation residual(xi) = {F, dF/dxi} from the start
+     * xi: false if the derivative vanishes or xi runs off (|xi| > 1e3);
+     * converged when a step is below `tolerance` (1 + |xi|). `derivative`:
+     * dF/dxi at the last iterate.
+     */
+    template <typename Residual>
+    bool
+    newton(const Residual &residual,
+           double         &xi,
+           const double    tolerance,
+           double         &derivative)
+    {
+      for (unsigned int it = 0; it < 30; ++it)
+        {
+          const auto [F, dF] = residual(xi);
+          derivative         = dF;
+          if (std::abs(dF) < 1e-300)
+            return false;
+          const double step = F / dF;
+          xi -= step;
+          if (std::abs(xi) > 1e3)
+            return false;
+          if (std::abs(step) < tolerance * (1 + std::abs(xi)))
+            return true;
+        }
+      return false;
+    }
+
+    /**
+     * The solution with derivatives: two Newton steps in Number from the
+     * converged xi (the first gives exact first derivatives, the second
+     * exact second derivatives; the value does not change).
+     */
+    template <typename Number, typename Residual>
+    Number
+    newton_derivatives(const Residual &residual, const double xi)
+    {
+      Number result(xi);
+      for (unsigned int step = 0; step < 2; ++step)
+        {
+          const auto [F, dF] = residual(result);
+          result -= F / dF;
+        }
+      return result;
+    }
+
+    /** cross(x(xi) - p, n(xi)) and its derivative in xi. */
+    template <typename Number, typename Xi>
+    std::array<Number, 2>
+    normal_line_residual(const Curve<Number> &x,
+                         const Curve<Number> &n,
+                         const Vec<Number>   &p,
+                         const Xi            &xi)
+    {
+      const auto        N  = QuadraticFace::line_shape(xi);
+      const auto        dN = QuadraticFace::line_shape_derivative(xi);
+      const Vec<Number> d  = combine(x, N) - p;
+      return {
+        {cross(d, combine(n, N)),
+         cross(combine(x, dN), combine(n, N)) + cross(d, combine(n, dN))}};
+    }
+
+    /**
      * The xi on the curve x with nodal normals n whose interpolated normal
      * line passes through p: cross(x(xi) - p, n(xi)) = 0. `xi` comes in as
      * the start (the chord's solution).
@@ -78,31 +141,17 @@ namespace ContactDynamics
                        const Vec<double>   &p,
                        double              &xi)
     {
-      for (unsigned int it = 0; it < 30; ++it)
-        {
-          const auto        N  = QuadraticFace::line_shape(xi);
-          const auto        dN = QuadraticFace::line_shape_derivative(xi);
-          const Vec<double> d  = combine(x, N) - p;
-          const double      F  = cross(d, combine(n, N));
-          const double      dF =
-            cross(combine(x, dN), combine(n, N)) + cross(d, combine(n, dN));
-          if (std::abs(dF) < 1e-300)
-            return false;
-          const double step = F / dF;
-          xi -= step;
-          if (std::abs(xi) > 1e3)
-            return false;
-          if (std::abs(step) < 1e-13 * (1 + std::abs(xi)))
-            return true;
-        }
-      return false;
+      double derivative;
+      return newton(
+        [&](const double s) {
+          return normal_line_residual(x, n, p, s);
+        },
+        xi,
+        1e-13,
+        derivative);
     }
 
-    /**
-     * The same with derivatives: two Newton steps in Number from the
-     * converged xi (the first gives exact first derivatives, the second
-     * exact second derivatives; the value does not change).
-     */
+    /** The same with derivatives, from the converged xi. */
     template <typename Number>
     Number
     project_onto_curve(const Curve<Number> &x,
@@ -110,24 +159,30 @@ namespace ContactDynamics
                        const Vec<Number>   &p,
                        const double         xi)
     {
-      Number result(xi);
-      for (unsigned int step = 0; step < 2; ++step)
-        {
-          const auto        N  = QuadraticFace::line_shape(result);
-          const auto        dN = QuadraticFace::line_shape_derivative(result);
-          const Vec<Number> d  = combine(x, N) - p;
-          const Number      F  = cross(d, combine(n, N));
-          const Number      dF =
-            cross(combine(x, dN), combine(n, N)) + cross(d, combine(n, dN));
-          result -= F / dF;
-        }
-      return result;
+      return newton_derivatives<Number>(
+        [&](const Number &s) {
+          return normal_line_residual(x, n, p, s);
+        },
+        xi);
+    }
+
+    /** cross(y(eta) - x, n) and its derivative in eta. */
+    template <typename Number, typename Xi>
+    std::array<Number, 2>
+    line_hit_residual(const Vec<Number>   &x,
+                      const Vec<Number>   &n,
+                      const Curve<Number> &y,
+                      const Xi            &eta)
+    {
+      return {
+        {cross(Vec<Number>(combine(y, QuadraticFace::line_shape(eta)) - x), n),
+         cross(combine(y, QuadraticFace::line_shape_derivative(eta)), n)}};
     }
 
     /**
      * The eta on the curve y hit by the line through x along the unit
      * vector n: cross(y(eta) - x, n) = 0, from the chord's solution, by
-     * Newton in double, then one step in Number.
+     * Newton in double, then (exact) with derivatives.
      */
     template <typename Number>
     Number
@@ -140,32 +195,35 @@ namespace ContactDynamics
       const Vec<double>   xd = values(x), nd = values(n);
       double              eta =
         MortarGeometry::intersect_line_with_face(xd, nd, yd[0], yd[1]);
-      for (unsigned int it = 0; it < 30; ++it)
-        {
-          const double G =
-            cross(Vec<double>(combine(yd, QuadraticFace::line_shape(eta)) - xd),
-                  nd);
-          const double dG =
-            cross(combine(yd, QuadraticFace::line_shape_derivative(eta)), nd);
-          if (std::abs(dG) < 1e-300)
-            break;
-          eta -= G / dG;
-          if (std::abs(G / dG) < 1e-14 * (1 + std::abs(eta)) ||
-              std::abs(eta) > 1e3)
-            break;
-        }
+      double derivative;
+      newton(
+        [&](const double e) {
+          return line_hit_residual(xd, nd, yd, e);
+        },
+        eta,
+        1e-14,
+        derivative);
       if (!exact)
         return Number(eta);
-      // two steps: exact second derivatives
-      Number result(eta);
-      for (unsigned int step = 0; step < 2; ++step)
-        {
-          const auto   N  = QuadraticFace::line_shape(result);
-          const auto   dN = QuadraticFace::line_shape_derivative(result);
-          const Number G  = cross(Vec<Number>(combine(y, N) - x), n);
-          result -= G / cross(combine(y, dN), n);
-        }
-      return result;
+      return newton_derivatives<Number>(
+        [&](const Number &e) {
+          return line_hit_residual(x, n, y, e);
+        },
+        eta);
+    }
+
+    /** (x(xi) - p).x'(xi) and its derivative in xi. */
+    template <typename Number, typename Xi>
+    std::array<Number, 2>
+    closest_point_residual(const Curve<Number> &x,
+                           const Vec<Number>   &p,
+                           const Xi            &xi)
+    {
+      const Vec<Number> d = combine(x, QuadraticFace::line_shape(xi)) - p;
+      const Vec<Number> t =
+        combine(x, QuadraticFace::line_shape_derivative(xi));
+      const Vec<Number> k = x[0] + x[1] - 2. * x[2]; // x''
+      return {{d * t, t * t + d * k}};
     }
 
     /**
@@ -176,40 +234,27 @@ namespace ContactDynamics
     inline bool
     closest_point(const Curve<double> &x, const Vec<double> &p, double &xi)
     {
-      for (unsigned int it = 0; it < 30; ++it)
-        {
-          const Vec<double> d = combine(x, QuadraticFace::line_shape(xi)) - p;
-          const Vec<double> t =
-            combine(x, QuadraticFace::line_shape_derivative(xi));
-          const Vec<double> k = x[0] + x[1] - 2. * x[2]; // x''
-          const double      F = d * t, dF = t * t + d * k;
-          if (std::abs(dF) < 1e-300)
-            return false;
-          xi -= F / dF;
-          if (std::abs(xi) > 1e3)
-            return false;
-          if (std::abs(F / dF) < 1e-14 * (1 + std::abs(xi)))
-            return dF > 0; // (a closest point, not a farthest one)
-        }
-      return false;
+      double derivative;
+      return newton(
+               [&](const double s) {
+                 return closest_point_residual(x, p, s);
+               },
+               xi,
+               1e-14,
+               derivative) &&
+             derivative > 0; // (a closest point, not a farthest one)
     }
 
-    /** The same with derivatives: two Newton steps from the converged xi. */
+    /** The same with derivatives, from the converged xi. */
     template <typename Number>
     Number
     closest_point(const Curve<Number> &x, const Vec<Number> &p, const double xi)
     {
-      Number     result(xi);
-      const auto k = x[0] + x[1] - 2. * x[2];
-      for (unsigned int step = 0; step < 2; ++step)
-        {
-          const Vec<Number> d =
-            combine(x, QuadraticFace::line_shape(result)) - p;
-          const Vec<Number> t =
-            combine(x, QuadraticFace::line_shape_derivative(result));
-          result -= (d * t) / (t * t + d * Vec<Number>(k));
-        }
-      return result;
+      return newton_derivatives<Number>(
+        [&](const Number &s) {
+          return closest_point_residual(x, p, s);
+        },
+        xi);
     }
 
     /** The positions of a face's nodes from those of the nodes. */
