@@ -494,20 +494,27 @@ namespace ContactDynamics
     prm.enter_subsection("Finite element");
     const auto degree = prm.get_integer("Polynomial degree");
     prm.leave_subsection();
-    // degree 2 between two meshed surfaces: 2-D only so far
-    const bool meshed_degree_2 = dim == 2;
+    // degree 2 between two meshed surfaces: in 3-D frictionless dual
+    // mortar only so far
+    const bool is_mortar =
+      contact.formulation == ContactParameters::Formulation::mortar;
     if (contact.formulation != ContactParameters::Formulation::none)
       for (const ContactPair &pair : contact.pairs)
-        AssertThrow(degree == 1 || pair.obstacle >= 0 || meshed_degree_2,
+        AssertThrow(degree == 1 || pair.obstacle >= 0 || dim == 2 ||
+                      (is_mortar && pair.friction_coefficient == 0),
                     ExcMessage(
                       "'Finite element/Polynomial degree' is " +
                       std::to_string(degree) + ", and the contact pair '" +
                       pair.name +
-                      "' is between two meshed surfaces: with degree 2, "
-                      "such pairs are built in 2-D only so far (in 3-D, "
-                      "pairs against rigid obstacles, Contact/Rigid "
-                      "obstacles). Use degree 1, or a rigid obstacle as the "
-                      "primary side."));
+                      "' is between two meshed surfaces in 3-D: with degree "
+                      "2, such pairs are built for frictionless dual mortar "
+                      "only so far (" +
+                      (is_mortar ? "this pair has a friction coefficient of " +
+                                     std::to_string(pair.friction_coefficient) :
+                                   std::string("Contact/Formulation is "
+                                               "node-to-segment")) +
+                      "). Use degree 1, Formulation = mortar without "
+                      "friction, or a rigid obstacle as the primary side."));
 
     switch (contact.formulation)
       {

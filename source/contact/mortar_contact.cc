@@ -13,40 +13,12 @@ namespace ContactDynamics
 {
   using SegmentGeometry::Vec;
 
-  void
-  MortarParameters::declare_parameters(ParameterHandler &prm)
-  {
-    const MortarParameters defaults;
-    ComplementarityParameters::declare_parameters(prm,
-                                                  defaults.complementarity);
-    prm.declare_entry("Segment quadrature points",
-                      default_text(defaults.quadrature_points),
-                      Patterns::Integer(1, 10),
-                      "2-D: Gauss points per mortar segment, in [1, 10]; 2 "
-                      "integrates the products of linear functions exactly. "
-                      "3-D: the Witherden-Vincent rule on each triangle of "
-                      "a clip polygon with this many points per direction, "
-                      "in [2, 7] (6, 7, 15, 19, 28, 37 points, exact to "
-                      "degree 2n-1; 2 is Dunavant's 6-point rule, exact to "
-                      "degree 4, exact for parallelogram faces; on other "
-                      "faces the patch test keeps an error of 2e-8 with 2, "
-                      "1e-10 with 4, at 2.3 times the cost).");
-  }
-
-  void
-  MortarParameters::parse_parameters(ParameterHandler &prm)
-  {
-    complementarity.parse_parameters(prm);
-    quadrature_points = prm.get_integer("Segment quadrature points");
-  }
-
-
-
   template <int dim>
   MortarContact<dim>::MortarContact(const ContactParameters &contact,
                                     const MortarParameters  &mortar)
     : SurfaceContact<dim>(contact, mortar.complementarity)
     , quadrature_points(mortar.quadrature_points)
+    , segment_edge_points(mortar.segment_edge_points)
   {
     // (one point per triangle leaves the mass matrix of the dual basis
     // singular: a triangular overlap has one point, the centroids of a

@@ -136,6 +136,8 @@ namespace ContactDynamics
     const unsigned int               e,
     const std::vector<unsigned int> &primary_faces) const
   {
+    if (pair.secondary.degree == 2)
+      return quadratic_patch_unknowns(pair, e, primary_faces);
     std::vector<types::global_dof_index> unknowns;
     for (const unsigned int n : ring_nodes(pair, e))
       for (unsigned int d = 0; d < 3; ++d)
@@ -160,6 +162,8 @@ namespace ContactDynamics
                                    const TrialState  &state,
                                    PatchForces       &forces)
   {
+    if (pair.secondary.degree == 2)
+      return assemble_quadratic_patch(pair, e, state, forces);
     const bool exact    = this->complementarity.exact_jacobian;
     const auto unknowns = patch_unknowns(pair, e, pair.candidates[e]);
     const bool rates = this->complementarity.holds_contact() && state.dynamic;

@@ -11,7 +11,8 @@ namespace ContactDynamics
   struct MortarParameters
   {
     ComplementarityParameters complementarity;
-    unsigned int              quadrature_points = 2;
+    unsigned int              quadrature_points   = 2;
+    unsigned int              segment_edge_points = 4;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -107,7 +108,7 @@ namespace ContactDynamics
                       const std::vector<types::global_dof_index> &unknowns,
                       PatchForces                                &forces);
 
-    /** 2-D faces of degree 2: mortar_contact_quadratic.cc. */
+    /** Faces of degree 2: mortar_contact_quadratic.cc (2-D), _3d.cc. */
     std::vector<types::global_dof_index>
     quadratic_patch_unknowns(
       const PairData                  &pair,
@@ -121,6 +122,7 @@ namespace ContactDynamics
                              PatchForces       &forces);
 
     unsigned int quadrature_points;
+    unsigned int segment_edge_points;
   };
 
   // 3-D (mortar_contact_3d.cc): a patch reads the secondary nodes of the
@@ -139,6 +141,22 @@ namespace ContactDynamics
                                    const unsigned int patch,
                                    const TrialState  &state,
                                    PatchForces       &forces);
+
+  // 3-D faces of degree 2 (mortar_contact_quadratic_3d.cc): the face's 9
+  // nodes, the primary nodes of the candidates, the 9 normal multipliers
+  template <>
+  std::vector<types::global_dof_index>
+  MortarContact<3>::quadratic_patch_unknowns(
+    const PairData                  &pair,
+    const unsigned int               patch,
+    const std::vector<unsigned int> &primary_faces) const;
+
+  template <>
+  void
+  MortarContact<3>::assemble_quadratic_patch(PairData          &pair,
+                                             const unsigned int patch,
+                                             const TrialState  &state,
+                                             PatchForces       &forces);
 } // namespace ContactDynamics
 
 #endif
