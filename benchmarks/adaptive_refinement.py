@@ -30,6 +30,7 @@ minutes for the sphere (its uniform factor 2 mesh: 0.34 million unknowns,
 10 GB) and 5 for ironing.
 
     benchmarks/adaptive_refinement.py [--build build] [--only hertz|sphere|ironing]
+    benchmarks/adaptive_refinement.py --sphere-degree2 [FACTOR ...]
 """
 import argparse
 import math
@@ -161,6 +162,27 @@ def sphere(exe):
     return rows
 
 
+def sphere_degree2(exe, factors):
+    """The sphere between two meshed bodies with elements of degree 2
+    (frictionless dual mortar on 9-node faces, exact Jacobian), uniform
+    meshes at the larger load; Adapt to contact is refused in 3-D with
+    degree 2."""
+    load, rows = 0.002, []
+    for f in factors:
+        directory, memory = run(exe, f"sphere_{load:g}_degree2_{f:g}", "prm/examples/hertz_3d.prm", {
+            "Boundary conditions/Dirichlet":
+            "block_bottom: xyz: 0; block_left: x: 0; block_front: z: 0; "
+            f"sphere_left: x: 0; sphere_front: z: 0; sphere_top: y: -{load}*t",
+            "Output/VTU interval": "1", "Finite element/Polynomial degree": "2",
+            "Contact/Mortar/Jacobian": "exact", "Scene/Refinement factor": str(f)})
+        stats = avc.read_csv(directory / "statistics.csv")
+        rows.append(dict(load=load, kind="uniform, degree 2", factor=f, levels=0, buffer=0,
+                         unknowns=unknowns_of(directory, stats),
+                         wall=float(stats["wall_time"][-1]), memory=memory,
+                         **sphere_errors(directory, stats)))
+    return rows
+
+
 # the reference mesh's element passage: the 2-D substrate's top has
 # 200 elements on 12 at factor 1 (source/scenes/ironing.cc), the tool
 # slides at 1, dt = 0.01: 6 steps
@@ -216,8 +238,26 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--build", default="build")
     parser.add_argument("--only", choices=["hertz", "sphere", "ironing"])
+    parser.add_argument("--sphere-degree2", nargs="*", type=float, metavar="FACTOR",
+                        help="only the sphere with degree 2 on these uniform factors "
+                             "(default 0.5 0.75): doc/degree-sphere-two-bodies-table.md")
     args = parser.parse_args()
     exe = (ROOT / args.build / "contact-dynamics").resolve()
+    if args.sphere_degree2 is not None:
+        rows = sphere_degree2(exe, args.sphere_degree2 or [0.5, 0.75])
+        out = ["<!-- written by benchmarks/adaptive_refinement.py --sphere-degree2 -->", "",
+               "| top displacement | a/R | mesh | unknowns | active nodes | a error | p0 error | "
+               "int p / P - 1 | wall time [s] | peak memory [MB] |",
+               "|---|---|---|---|---|---|---|---|---|---|"]
+        for r in rows:
+            out.append(f"| {r['load']:g} | {r['a_over_R']:.3f} | degree 2, uniform, factor "
+                       f"{r['factor']:g} | {r['unknowns']} | {r['active']} | {100 * r['a']:+.2f} % | "
+                       f"{100 * r['p0']:+.2f} % | {100 * r['balance']:+.2f} % | {r['wall']:.1f} | "
+                       f"{r['memory']:.0f} |")
+        name = ROOT / "doc" / "degree-sphere-two-bodies-table.md"
+        name.write_text("\n".join(out) + "\n")
+        print(f"wrote {name}")
+        return
     lines = ["<!-- written by benchmarks/adaptive_refinement.py -->\n"]
     if args.only in (None, "hertz"):
         print("Hertz, uniform and adaptive:")
