@@ -9,9 +9,9 @@
 // value give exact first and second derivatives.
 //
 // The only approximation is the segment's boundary: between the projected
-// boundary nodes it is straight in the secondary face's coordinates
-// (exact for faces whose primary edges project onto straight lines, as on
-// flat interfaces).
+// edge points it is straight in the secondary face's coordinates (exact
+// where the primary edges project onto straight lines, as between
+// parallelogram faces on a flat interface).
 #ifndef contact_dynamics_contact_quadratic_segment_3d_h
 #define contact_dynamics_contact_quadratic_segment_3d_h
 

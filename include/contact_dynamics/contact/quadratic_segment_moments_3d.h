@@ -46,6 +46,9 @@ namespace ContactDynamics
       const auto       inside    = [&](const Corner<Number> &c) {
         return side * (value_of(c.s[axis]) - bound) >= -tolerance;
       };
+      const auto on_bound = [&](const Corner<Number> &c) {
+        return std::abs(value_of(c.s[axis]) - bound) < tolerance;
+      };
       const auto cut = [&](const Corner<Number> &a, const Corner<Number> &b) {
         const Number t =
           (bound - a.s[axis]) / (b.s[axis] - a.s[axis]); // (a, b apart)
@@ -62,15 +65,17 @@ namespace ContactDynamics
       for (unsigned int k = 0; k < polygon.size(); ++k)
         {
           const auto &a = polygon[k], &b = polygon[(k + 1) % polygon.size()];
+          // (a corner on the bound, within the tolerance, is the cut
+          // itself: a cut there would extrapolate along the edge)
           if (inside(b))
             {
-              if (!inside(a))
+              if (!inside(a) && !on_bound(b))
                 result.push_back(cut(a, b));
               result.push_back(b);
-              if (std::abs(value_of(b.s[axis]) - bound) < tolerance)
+              if (on_bound(b))
                 result.back().s[axis] = Number(bound);
             }
-          else if (inside(a))
+          else if (inside(a) && !on_bound(a))
             result.push_back(cut(a, b));
         }
       return result;
@@ -111,7 +116,13 @@ namespace ContactDynamics
             Vec3<double>       pd;
             for (unsigned int d = 0; d < 3; ++d)
               pd[d] = value_of(x[d]);
-            std::array<double, 2> y{{0.5, 0.5}};
+            // (from the previous point's solution: the next root along
+            // the edge, not a spurious one of the face's extension)
+            std::array<double, 2> y =
+              polygon.empty() ?
+                std::array<double, 2>{{0.5, 0.5}} :
+                std::array<double, 2>{{value_of(polygon.back().s[0]),
+                                       value_of(polygon.back().s[1])}};
             if (!newton<2>(
                   [&](const auto &z, auto &r, auto &J) {
                     closest_point_system(xsd, pd, z, r, J);
