@@ -17,6 +17,7 @@
 
 #include <contact_dynamics/contact/contact_ad.h>
 #include <contact_dynamics/contact/dual_basis_3d.h>
+#include <contact_dynamics/contact/kept_multiplier_nodes.h>
 #include <contact_dynamics/contact/mortar_contact.h>
 #include <contact_dynamics/contact/mortar_geometry.h>
 #include <contact_dynamics/contact/quadratic_curve.h>
@@ -197,7 +198,7 @@ namespace ContactDynamics
      * support is covered from the other end beyond the middle is small or
      * negative, and its dual function and multiplier blow up (the sum of
      * the others is then no longer 1). A node whose covered D_j is below
-     * dropped_fraction of its whole-face one leaves the face's multiplier
+     * 10 % of its whole-face one leaves the face's multiplier
      * space: its function is spread onto the nodes kept as they interpolate
      * a linear function (one node kept: a constant), so that the N'
      * still sum to 1 and reproduce linear fields, and so do their dual
@@ -209,8 +210,7 @@ namespace ContactDynamics
                    const std::vector<SegmentPoint<Number>> &points,
                    const QGauss<1>                         &gauss)
     {
-      constexpr double      dropped_fraction = 0.1;
-      const Curve<double>   xd               = values(x);
+      const Curve<double>   xd = values(x);
       std::array<double, 3> covered{}, whole{};
       for (const auto &q : points)
         for (unsigned int j = 0; j < 3; ++j)
@@ -224,17 +224,7 @@ namespace ContactDynamics
           for (unsigned int j = 0; j < 3; ++j)
             whole[j] += N[j] * 2. * gauss.weight(q) * J;
         }
-      std::vector<unsigned int> kept;
-      unsigned int              best = 0;
-      for (unsigned int j = 0; j < 3; ++j)
-        {
-          if (covered[j] >= dropped_fraction * whole[j])
-            kept.push_back(j);
-          if (covered[j] / whole[j] > covered[best] / whole[best])
-            best = j;
-        }
-      if (kept.empty())
-        kept.push_back(best);
+      const auto kept = kept_multiplier_nodes(covered, whole);
       std::array<std::array<double, 3>, 3> T{};
       for (const unsigned int j : kept)
         T[j][j] = 1.;

@@ -16,6 +16,7 @@
 #include <deal.II/base/quadrature_lib.h>
 
 #include <contact_dynamics/contact/contact_ad.h>
+#include <contact_dynamics/contact/kept_multiplier_nodes.h>
 #include <contact_dynamics/contact/mortar_contact.h>
 #include <contact_dynamics/contact/quadratic_segment_moments_3d.h>
 #include <contact_dynamics/contact/reverse_hessian_sweep.h>
@@ -162,7 +163,6 @@ namespace ContactDynamics
     Map9
     multiplier_map(const Face<double> &x, const std::array<double, 9> &covered)
     {
-      constexpr double      dropped_fraction = 0.1;
       std::array<double, 9> whole{};
       const QGauss<1>       gauss(3);
       for (unsigned int a = 0; a < 3; ++a)
@@ -174,17 +174,7 @@ namespace ContactDynamics
             for (unsigned int j = 0; j < 9; ++j)
               whole[j] += s.N[j] * gauss.weight(a) * gauss.weight(b) * J;
           }
-      std::vector<unsigned int> kept;
-      unsigned int              best = 0;
-      for (unsigned int j = 0; j < 9; ++j)
-        {
-          if (covered[j] >= dropped_fraction * whole[j])
-            kept.push_back(j);
-          if (covered[j] / whole[j] > covered[best] / whole[best])
-            best = j;
-        }
-      if (kept.empty())
-        kept.push_back(best);
+      const auto kept  = kept_multiplier_nodes(covered, whole);
       const auto nodes = QuadraticFace::node_coordinates<3>();
       Map9       T{};
       for (const unsigned int j : kept)
