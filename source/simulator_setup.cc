@@ -99,16 +99,6 @@ namespace ContactDynamics
     // p4est refines and repartitions in parallel
     if (refinement.adapt_to_contact)
       parallel_parameters.mesh = ParallelParameters::Mesh::distributed;
-    // (a hanging node of degree 2 on a 3-D contact surface follows its
-    // coarse edge with a negative weight: not checked with the contact
-    // conditions' nodal sums yet; 2-D contact surfaces have none)
-    AssertThrow(dim == 2 || !refinement.adapt_to_contact ||
-                  discretization.degree() == 1,
-                ExcMessage("'Mesh refinement/Adapt to contact' is true with "
-                           "'Finite element/Polynomial degree' = 2 and "
-                           "Dimension = 3: adaptation to contact in 3-D is "
-                           "built for degree 1 only so far (2-D runs with "
-                           "degree 2)."));
     base_level = parallel_parameters.global_refinements;
 
     mechanics = std::make_unique<SolidMechanics<dim>>(discretization.mapping(),

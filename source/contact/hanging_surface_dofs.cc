@@ -9,6 +9,7 @@
 #include <contact_dynamics/contact/patch_forces.h>
 #include <contact_dynamics/parallel.h>
 
+#include <algorithm>
 #include <cstdint>
 
 namespace ContactDynamics
@@ -99,6 +100,61 @@ namespace ContactDynamics
             parents[j].emplace_back(k->second, weight);
           }
     return parents;
+  }
+
+  std::vector<std::array<unsigned int, 4>>
+  HangingSurfaceDofs::edge_subdivisions(const ContactSurface<3> &surface) const
+  {
+    std::vector<std::array<unsigned int, 4>> result(
+      surface.face_nodes.size(), std::array<unsigned int, 4>{{1, 1, 1, 1}});
+    if (followed.empty() || surface.degree != 2)
+      return result;
+    // per node: the hanging nodes that follow it, with their weights
+    std::map<types::global_dof_index, unsigned int> node_of;
+    for (unsigned int j = 0; j < surface.n_nodes(); ++j)
+      node_of[surface.dofs[j][0]] = j;
+    std::vector<std::vector<std::map<unsigned int, double>>> followers(
+      surface.n_nodes());
+    for (unsigned int j = 0; j < surface.n_nodes(); ++j)
+      if (const Followed *h = find(surface.dofs[j][0]))
+        {
+          std::map<unsigned int, double> weights;
+          for (const auto &[parent, weight] : *h)
+            if (const auto k = node_of.find(parent); k != node_of.end())
+              weights[k->second] = weight;
+          for (const auto &[k, weight] : weights)
+            followers[k].push_back(weights);
+        }
+    // the 9-node face's edges (vertex, mid-side node, vertex) around it
+    static constexpr unsigned int edge_nodes[4][3] = {{0, 6, 1},
+                                                      {1, 5, 3},
+                                                      {3, 7, 2},
+                                                      {2, 4, 0}};
+    for (unsigned int f = 0; f < surface.face_nodes.size(); ++f)
+      for (unsigned int edge = 0; edge < 4; ++edge)
+        {
+          const unsigned int a = surface.face_nodes[f][edge_nodes[edge][0]],
+                             m = surface.face_nodes[f][edge_nodes[edge][1]],
+                             b = surface.face_nodes[f][edge_nodes[edge][2]];
+          // a node of the edge at t follows a, m, b with the edge's
+          // quadratic shape functions at t, and t = N_m(t) / 2 + N_b(t)
+          std::vector<double> t{0., 1.};
+          for (const auto &weights : followers[m])
+            if (std::all_of(weights.begin(), weights.end(), [&](const auto &w) {
+                  return w.first == a || w.first == m || w.first == b;
+                }))
+              t.push_back(weights.at(m) / 2 +
+                          (weights.count(b) > 0 ? weights.at(b) : 0.));
+          std::sort(t.begin(), t.end());
+          double gap = 1;
+          for (unsigned int i = 1; i < t.size(); ++i)
+            if (t[i] - t[i - 1] > 1e-9)
+              gap = std::min(gap, t[i] - t[i - 1]);
+          // a finer face's edge holds three nodes: it is twice the gap
+          while (result[f][edge] < 64 && result[f][edge] * 2 * gap < 0.99)
+            result[f][edge] *= 2;
+        }
+    return result;
   }
 
   template <typename Derivatives>

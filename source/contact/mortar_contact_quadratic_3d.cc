@@ -62,6 +62,7 @@ namespace ContactDynamics
       std::vector<double>                    gradient;
       std::vector<unsigned int>              covering;
       std::vector<std::array<unsigned, n_v>> variables;
+      std::vector<EdgePoints>                edge_points; // per segment
     };
 
     template <typename Number>
@@ -100,6 +101,16 @@ namespace ContactDynamics
                  const TriangleRule                               &rule,
                  const unsigned int                                edge_points)
     {
+      // (edges that finer faces hang on: their points, so that the
+      // segments of coarse and fine primary faces tile)
+      const auto points_of = [&](const unsigned int pf) {
+        EdgePoints points;
+        for (unsigned int i = 0; i < 4; ++i)
+          points[i] = edge_points * (pair.primary_edge_subdivisions.empty() ?
+                                       1 :
+                                       pair.primary_edge_subdivisions[pf][i]);
+        return points;
+      };
       using AD                                 = Sacado::Fad::SFad<double, n_v>;
       const unsigned int                   n_x = position.size();
       std::map<unsigned int, unsigned int> primary_index;
@@ -129,10 +140,11 @@ namespace ContactDynamics
           if (ns * nm >= 0)
             continue;
           std::array<AD, n_moments> m;
-          const bool                ok = segment_moments(xs,
+          const EdgePoints          points = points_of(pf);
+          const bool                ok     = segment_moments(xs,
                                           xm,
                                           rule,
-                                          edge_points,
+                                          points,
                                           rates ? &vs : nullptr,
                                           rates ? &vm : nullptr,
                                           m);
@@ -141,6 +153,7 @@ namespace ContactDynamics
             continue;
           result.covering.push_back(pf);
           result.variables.push_back(index);
+          result.edge_points.push_back(points);
           for (unsigned int q = 0; q < n_moments; ++q)
             {
               result.total[q] += m[q].val();
@@ -382,7 +395,7 @@ namespace ContactDynamics
                         const std::array<unsigned, n_v>     &index,
                         const std::array<double, n_moments> &c,
                         const TriangleRule                  &rule,
-                        const unsigned int                   edge_points,
+                        const EdgePoints                    &edge_points,
                         std::vector<double>                 &hessian)
     {
       using Inner        = Sacado::Fad::SFad<double, n_v>;
@@ -433,7 +446,6 @@ namespace ContactDynamics
                       const std::vector<std::array<double, 9>> &dw,
                       const std::vector<double>                &position,
                       const TriangleRule                       &rule,
-                      const unsigned int                        edge_points,
                       std::vector<double>                      &hessian)
     {
       const unsigned int            n_x = position.size();
@@ -443,8 +455,9 @@ namespace ContactDynamics
       for (unsigned int j = 0; j < 9; ++j)
         c_node[j] = lambda[j] * f.weight[j];
       ratio_derivatives(fm.total, T, c_node, f.ratio, c, B);
-      for (const auto &index : fm.variables)
-        add_segment_hessian(position, index, c, rule, edge_points, hessian);
+      for (unsigned int k = 0; k < fm.variables.size(); ++k)
+        add_segment_hessian(
+          position, fm.variables[k], c, rule, fm.edge_points[k], hessian);
       std::vector<double> BG(54 * n_x, 0.);
       for (unsigned int a = 0; a < 54; ++a)
         for (unsigned int b = 0; b < 54; ++b)
@@ -626,7 +639,6 @@ namespace ContactDynamics
                         dw,
                         position,
                         rule,
-                        segment_edge_points,
                         hessian);
     forces.add_normal_rows(unknowns,
                            lambda,

@@ -113,6 +113,9 @@ namespace ContactDynamics
     for (auto &pair : pairs)
       {
         pair.hanging_parents = hanging.node_parents(pair.secondary, dim);
+        if constexpr (dim == 3)
+          pair.primary_edge_subdivisions =
+            hanging.edge_subdivisions(pair.primary);
         distribute(pair);
       }
     normal_multiplier_dofs.assign(secondary_normal.begin(),

@@ -85,6 +85,9 @@ namespace ContactDynamics
     // per secondary node that hangs on an adapted 3-D mesh: the nodes it
     // follows and their weights (empty for a node with its own unknowns)
     std::vector<std::vector<std::pair<unsigned int, double>>> hanging_parents;
+    // per primary face of degree 2 in 3-D and per edge: into how many parts
+    // finer faces that hang on it divide it (HangingSurfaceDofs)
+    std::vector<std::array<unsigned int, 4>> primary_edge_subdivisions;
 
     /** What the patches add up at node j. */
     std::vector<LinearizedValue *>

@@ -14,6 +14,7 @@
 
 #include <contact_dynamics/contact/contact_surface.h>
 
+#include <array>
 #include <map>
 #include <set>
 #include <utility>
@@ -57,6 +58,16 @@ namespace ContactDynamics
     std::vector<std::vector<std::pair<unsigned int, double>>>
     node_parents(const ContactSurface<dim> &surface,
                  const unsigned int         component) const;
+
+    /**
+     * Per face of a 3-D surface of degree 2 and per edge, in the order of
+     * the face's boundary (0,0)-(1,0)-(1,1)-(0,1): into how many equal
+     * parts the finest faces that hang on it divide it (a power of 2; 1
+     * where none does). A face's segment polygon then follows its edges
+     * with the points of those finer faces: coarse and fine polygons tile.
+     */
+    std::vector<std::array<unsigned int, 4>>
+    edge_subdivisions(const ContactSurface<3> &surface) const;
 
   private:
     std::map<types::global_dof_index, Followed> followed;

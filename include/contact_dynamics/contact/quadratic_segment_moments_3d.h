@@ -81,10 +81,13 @@ namespace ContactDynamics
       return result;
     }
 
+    using EdgePoints = std::array<unsigned int, 4>;
+
     /**
      * The segment of the primary face xm on the secondary face xs, as a
      * polygon in the secondary face's coordinates ordered
-     * counterclockwise: edge_points points per edge of xm (equally spaced
+     * counterclockwise: edge_points[i] points on edge i of xm (around it
+     * from (0,0) over (1,0); equally spaced
      * in its coordinates) projected onto xs, clipped to xs; empty if it
      * does not overlap. False if such a point has no closest point on xs.
      */
@@ -92,7 +95,7 @@ namespace ContactDynamics
     bool
     segment_polygon(const Face<Number>          &xs,
                     const Face<Number>          &xm,
-                    const unsigned int           edge_points,
+                    const EdgePoints            &edge_points,
                     std::vector<Corner<Number>> &polygon)
     {
       const Face<double> xsd = values(xs);
@@ -104,9 +107,9 @@ namespace ContactDynamics
                                               {0., 1.},
                                               {0., 0.}};
       for (unsigned int edge = 0; edge < 4; ++edge)
-        for (unsigned int k = 0; k < edge_points; ++k)
+        for (unsigned int k = 0; k < edge_points[edge]; ++k)
           {
-            const double       t    = double(k) / edge_points;
+            const double       t    = double(k) / edge_points[edge];
             const double       p[2] = {corner[edge][0] +
                                          t * (corner[edge + 1][0] - corner[edge][0]),
                                        corner[edge][1] +
@@ -171,7 +174,7 @@ namespace ContactDynamics
     segment_moments(const Face<Number>            &xs,
                     const Face<Number>            &xm,
                     const TriangleRule            &rule,
-                    const unsigned int             edge_points,
+                    const EdgePoints              &edge_points,
                     const Face<Number>            *vs,
                     const Face<Number>            *vm,
                     std::array<Number, n_moments> &moments)
