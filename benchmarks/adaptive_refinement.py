@@ -164,20 +164,28 @@ def sphere(exe):
 
 def sphere_degree2(exe, factors):
     """The sphere between two meshed bodies with elements of degree 2
-    (frictionless dual mortar on 9-node faces, exact Jacobian), uniform
-    meshes at the larger load; Adapt to contact is refused in 3-D with
-    degree 2."""
-    load, rows = 0.002, []
-    for f in factors:
-        directory, memory = run(exe, f"sphere_{load:g}_degree2_{f:g}", "prm/examples/hertz_3d.prm", {
+    (frictionless dual mortar on 9-node faces, exact Jacobian): uniform
+    meshes at the larger load, and meshes adapted to the contact from
+    factor 0.25 (3 and 4 levels, buffer 1) at both loads of the degree-1
+    study."""
+    rows = []
+    runs = [(0.002, "uniform", f, 0, {"Scene/Refinement factor": str(f)}) for f in factors]
+    runs += [(load, "adaptive", 0.25, n, {
+        "Scene/Refinement factor": "0.25", "Mesh refinement/Adapt to contact": "true",
+        "Mesh refinement/Maximum levels": str(n), "Mesh refinement/Passes per step": str(n + 1),
+        "Mesh refinement/Buffer cells": "1"}) for load in (0.002, 0.0005) for n in (3, 4)]
+    for load, kind, f, n, changes in runs:
+        directory, memory = run(exe, f"sphere_{load:g}_degree2_{kind}_{f:g}_{n}",
+                                "prm/examples/hertz_3d.prm", {
             "Boundary conditions/Dirichlet":
             "block_bottom: xyz: 0; block_left: x: 0; block_front: z: 0; "
             f"sphere_left: x: 0; sphere_front: z: 0; sphere_top: y: -{load}*t",
             "Output/VTU interval": "1", "Finite element/Polynomial degree": "2",
-            "Contact/Mortar/Jacobian": "exact", "Scene/Refinement factor": str(f)})
+            "Contact/Mortar/Jacobian": "exact", **changes})
         stats = avc.read_csv(directory / "statistics.csv")
-        rows.append(dict(load=load, kind="uniform, degree 2", factor=f, levels=0, buffer=0,
-                         unknowns=unknowns_of(directory, stats),
+        mesh = (f"degree 2, uniform, factor {f:g}" if kind == "uniform" else
+                f"degree 2, factor {f:g} + {n} levels, buffer 1")
+        rows.append(dict(load=load, mesh=mesh, unknowns=unknowns_of(directory, stats),
                          wall=float(stats["wall_time"][-1]), memory=memory,
                          **sphere_errors(directory, stats)))
     return rows
@@ -239,19 +247,20 @@ def main():
     parser.add_argument("--build", default="build")
     parser.add_argument("--only", choices=["hertz", "sphere", "ironing"])
     parser.add_argument("--sphere-degree2", nargs="*", type=float, metavar="FACTOR",
-                        help="only the sphere with degree 2 on these uniform factors "
-                             "(default 0.5 0.75): doc/degree-sphere-two-bodies-table.md")
+                        help="only the sphere with degree 2: uniform on these factors "
+                             "(default 0.5) and adapted to the contact: "
+                             "doc/degree-sphere-two-bodies-table.md")
     args = parser.parse_args()
     exe = (ROOT / args.build / "contact-dynamics").resolve()
     if args.sphere_degree2 is not None:
-        rows = sphere_degree2(exe, args.sphere_degree2 or [0.5, 0.75])
+        rows = sphere_degree2(exe, args.sphere_degree2 or [0.5])
         out = ["<!-- written by benchmarks/adaptive_refinement.py --sphere-degree2 -->", "",
                "| top displacement | a/R | mesh | unknowns | active nodes | a error | p0 error | "
                "int p / P - 1 | wall time [s] | peak memory [MB] |",
                "|---|---|---|---|---|---|---|---|---|---|"]
         for r in rows:
-            out.append(f"| {r['load']:g} | {r['a_over_R']:.3f} | degree 2, uniform, factor "
-                       f"{r['factor']:g} | {r['unknowns']} | {r['active']} | {100 * r['a']:+.2f} % | "
+            out.append(f"| {r['load']:g} | {r['a_over_R']:.3f} | {r['mesh']} "
+                       f"| {r['unknowns']} | {r['active']} | {100 * r['a']:+.2f} % | "
                        f"{100 * r['p0']:+.2f} % | {100 * r['balance']:+.2f} % | {r['wall']:.1f} | "
                        f"{r['memory']:.0f} |")
         name = ROOT / "doc" / "degree-sphere-two-bodies-table.md"

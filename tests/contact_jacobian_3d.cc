@@ -23,6 +23,11 @@
 // whose gap sums join their parents' and whose forces go to them), the
 // same checks with the trial state and the direction satisfying the
 // hanging-node constraints, on the rows that are not constrained.
+// Degree 2 (9-node faces): dual mortar (segments on the curved faces), also
+// on the refined interface (hanging nodes with the weights 3/8, 3/4, -1/8
+// of their coarse edge), and node-to-segment (closest points on the curved
+// faces or their curved edges; the normal smoothed into the nodal normals
+// interpolated with the 9 shape functions; friction).
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
 
@@ -366,6 +371,41 @@ main()
         true,
         false,
         -1,
+        false,
+        2);
+  check("degree 2, refined, quasi-static, exact",
+        "quasi-static",
+        "exact",
+        false,
+        false,
+        -1,
+        true,
+        2);
+  // node-to-segment of degree 2: closest points on the curved faces, on
+  // their surface or their curved edges, the normal smoothed near the
+  // edges into the nodal normals interpolated with the 9 shape functions
+  check("nts degree 2, quasi-static, exact",
+        "quasi-static",
+        "exact",
+        false,
+        false,
+        0,
+        false,
+        2);
+  check("nts degree 2 smoothed, held (persistency), exact",
+        "newmark",
+        "exact",
+        true,
+        false,
+        0.3,
+        false,
+        2);
+  check("nts degree 2 smoothed, friction, held",
+        "newmark",
+        "exact",
+        true,
+        true,
+        0.3,
         false,
         2);
 }

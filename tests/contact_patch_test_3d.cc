@@ -15,7 +15,10 @@
 // the primary surface unevenly, and the pressures are off by up to a
 // quarter (recorded, so that a change is noticed); the gaps of its nodes
 // are closed exactly. A monitored point given by its three coordinates
-// reports the pressure of its nearest node. (The approximate Jacobian
+// reports the pressure of its nearest node. Degree 2 (9-node faces) with
+// both formulations: dual mortar to the error of the segments' edges
+// (below), node-to-segment with the same checks as degree 1. (The
+// approximate Jacobian
 // keeps the test fast; the exact one is checked in contact_jacobian_3d.)
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
@@ -95,7 +98,7 @@ end
   const double exact                      = 1000;
   const auto [worst, worst_gap, n_active] = nodal_errors(*contact, exact);
   const auto stats                        = contact_statistics(*contact);
-  deallog.push(nts ? std::string("nts") :
+  deallog.push(nts ? std::string(degree == 2 ? "nts degree 2" : "nts") :
                degree == 2 ?
                      "degree 2, edge points " + std::to_string(edge_points) :
                      "rule " + std::to_string(n_points_1d));
@@ -181,4 +184,12 @@ main()
           << std::endl;
   check_true("nts: the error is that of one-pass NTS (between 1 % and 50 %)",
              error_nts > 0.01 && error_nts < 0.5);
+  // node-to-segment of degree 2: every node of the 9-node faces projected
+  // onto the curved primary faces; one pass, so not exact either
+  const double error_nts_2 = run(2, true, 2);
+  deallog << std::setprecision(3)
+          << "nts degree 2: measured relative pressure error: " << error_nts_2
+          << std::endl;
+  check_true("nts degree 2: the error of one-pass NTS (between 1 % and 50 %)",
+             error_nts_2 > 0.01 && error_nts_2 < 0.5);
 }

@@ -46,7 +46,8 @@ subsection Parallel
   set Mesh = distributed
 end
 subsection Finite element
-  set Polynomial degree = )" + std::to_string(degree) + R"(
+  set Polynomial degree = )" + std::to_string(degree) +
+                                                    R"(
 end
 subsection Contact
   subsection Mortar
@@ -94,7 +95,9 @@ int
 main()
 {
   initlog();
-  report_patch_tests([](const std::string &f) { return run(f); });
+  report_patch_tests([](const std::string &f) {
+    return run(f);
+  });
   const double error = run("mortar", 2);
   check_close("mortar, degree 2: max |pressure - E delta| / (E delta)",
               error,

@@ -105,8 +105,9 @@ namespace ContactDynamics
   std::vector<std::array<unsigned int, 4>>
   HangingSurfaceDofs::edge_subdivisions(const ContactSurface<3> &surface) const
   {
-    std::vector<std::array<unsigned int, 4>> result(
-      surface.face_nodes.size(), std::array<unsigned int, 4>{{1, 1, 1, 1}});
+    std::vector<std::array<unsigned int, 4>> result(surface.face_nodes.size(),
+                                                    std::array<unsigned int, 4>{
+                                                      {1, 1, 1, 1}});
     if (followed.empty() || surface.degree != 2)
       return result;
     // per node: the hanging nodes that follow it, with their weights

@@ -456,8 +456,12 @@ namespace ContactDynamics
         c_node[j] = lambda[j] * f.weight[j];
       ratio_derivatives(fm.total, T, c_node, f.ratio, c, B);
       for (unsigned int k = 0; k < fm.variables.size(); ++k)
-        add_segment_hessian(
-          position, fm.variables[k], c, rule, fm.edge_points[k], hessian);
+        add_segment_hessian(position,
+                            fm.variables[k],
+                            c,
+                            rule,
+                            fm.edge_points[k],
+                            hessian);
       std::vector<double> BG(54 * n_x, 0.);
       for (unsigned int a = 0; a < 54; ++a)
         for (unsigned int b = 0; b < 54; ++b)
@@ -631,15 +635,7 @@ namespace ContactDynamics
     if (exact && std::any_of(lambda.begin(), lambda.end(), [](double l) {
           return l != 0;
         }))
-      add_exact_hessian(fm,
-                        T,
-                        lambda,
-                        f,
-                        dh,
-                        dw,
-                        position,
-                        rule,
-                        hessian);
+      add_exact_hessian(fm, T, lambda, f, dh, dw, position, rule, hessian);
     forces.add_normal_rows(unknowns,
                            lambda,
                            direction,

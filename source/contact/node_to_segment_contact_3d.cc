@@ -8,6 +8,7 @@
 
 #include <contact_dynamics/contact/closest_point_3d.h>
 #include <contact_dynamics/contact/contact_ad.h>
+#include <contact_dynamics/contact/node_projection_3d.h>
 #include <contact_dynamics/contact/node_to_segment_contact.h>
 #include <contact_dynamics/contact/surface_geometry_3d.h>
 
@@ -19,6 +20,9 @@ namespace ContactDynamics
   namespace
   {
     using namespace ClippingGeometry;
+    using NodeProjection3D::edge_point;
+    using NodeProjection3D::end_weight;
+    using NodeProjection3D::projection_edge;
 
     Vec3<double>
     to_vec(const Point<3> &x)
@@ -58,34 +62,6 @@ namespace ContactDynamics
       return ((x - a) * d) / (d * d);
     }
 
-    // the face parameters of the point at parameter t along edge e
-    template <typename Number>
-    std::array<Number, 2>
-    edge_point(const unsigned int e, const Number &t)
-    {
-      const Number end(e % 2 ? 1. : 0.);
-      return e < 2 ? std::array<Number, 2>{{end, t}} :
-                     std::array<Number, 2>{{t, end}};
-    }
-
-    // The edge a point with parameters outside the face was projected onto
-    // (edge_point()), or 4 at a corner or inside
-    unsigned int
-    projection_edge(const std::array<double, 2> &parameters)
-    {
-      const auto on_end = [](const double t) {
-        return t == 0. || t == 1.;
-      };
-      const auto inside = [](const double t) {
-        return t > 0. && t < 1.;
-      };
-      if (on_end(parameters[0]) && inside(parameters[1]))
-        return parameters[0] == 0. ? 0 : 1;
-      if (on_end(parameters[1]) && inside(parameters[0]))
-        return parameters[1] == 0. ? 2 : 3;
-      return 4;
-    }
-
     // The primary face closest to secondary node j at x and the parameters
     // of the projection on it: the closest point of the face's bilinear
     // surface, which within the tolerance beyond the face's edges extends
@@ -104,8 +80,7 @@ namespace ContactDynamics
                  const unsigned int                   previous,
                  std::array<double, 2>               &best_parameters)
     {
-      // (the 2-D tolerance, 1e-2 of the half-face, as a fraction of the face)
-      constexpr double tolerance = 5e-3;
+      using NodeProjection3D::tolerance;
       const auto position = [&](const Surface &surface, const unsigned int k) {
         return to_vec(surface.position(k, u));
       };
@@ -161,20 +136,6 @@ namespace ContactDynamics
             }
         }
       return best;
-    }
-
-    // The weight of the smoothed normal at a face parameter s: 1 at and
-    // beyond the face's ends, 0 farther than `distance` from them (linear)
-    template <typename Number>
-    Number
-    end_weight(const Number &s, const double distance)
-    {
-      const Number to_end = s.val() <= 0.5 ? s : Number(1. - s);
-      if (to_end.val() >= distance)
-        return Number(0.);
-      if (to_end.val() <= 0)
-        return Number(1.);
-      return Number((distance - to_end) / distance);
     }
 
     // The closest point's parameters with, exact, their derivatives: those
@@ -242,37 +203,38 @@ namespace ContactDynamics
     }
 
     // The nodal force f (tangential part f_t) on secondary node j and,
-    // with weights N(xi, eta), opposite on the primary face
+    // with weights N (of the face's nodes), opposite on the primary face
     template <typename AD, typename PatchForces>
     void
     add_nodal_force(const Surface                              &s,
                     const Surface                              &p,
                     const unsigned int                          j,
                     const unsigned int                          face,
-                    const std::array<AD, 4>                    &N,
+                    const std::vector<AD>                      &N,
                     const Vec3<AD>                             &f,
                     const Vec3<AD>                             &f_t,
                     const bool                                  friction,
                     const std::vector<types::global_dof_index> &unknowns,
                     PatchForces                                &forces)
     {
+      const auto &nodes = p.face_nodes[face];
       for (unsigned int k = 0; k < 3; ++k)
         {
           forces.add(s.dofs[j][k],
                      f[k].val(),
                      ContactAD::derivatives(f[k], unknowns));
-          for (unsigned int a = 0; a < 4; ++a)
+          for (unsigned int a = 0; a < N.size(); ++a)
             {
               const AD row = -N[a] * f[k];
-              forces.add(p.dofs[p.faces[face][a]][k],
+              forces.add(p.dofs[nodes[a]][k],
                          row.val(),
                          ContactAD::derivatives(row, unknowns));
             }
           if (friction)
             {
               forces.add_tangential(s.dofs[j][k], f_t[k].val());
-              for (unsigned int a = 0; a < 4; ++a)
-                forces.add_tangential(p.dofs[p.faces[face][a]][k],
+              for (unsigned int a = 0; a < N.size(); ++a)
+                forces.add_tangential(p.dofs[nodes[a]][k],
                                       -N[a].val() * f_t[k].val());
             }
         }
@@ -327,14 +289,25 @@ namespace ContactDynamics
     auto                &current    = trial_face[pair_index];
     current.resize(s.n_nodes(), Surface::invalid);
     std::array<double, 2> parameters;
-    const unsigned int    face = closest_face(s,
-                                           p,
-                                           j,
-                                           pair.candidates[j],
-                                           state.u,
-                                           current[j],
-                                           parameters);
-    current[j]                 = face;
+    bool                  on_surface = false;
+    const unsigned int    face =
+      p.degree == 2 ?
+           NodeProjection3D::Quadratic::closest_face(s,
+                                                  p,
+                                                  j,
+                                                  pair.candidates[j],
+                                                  state.u,
+                                                  current[j],
+                                                  parameters,
+                                                  on_surface) :
+           closest_face(s,
+                     p,
+                     j,
+                     pair.candidates[j],
+                     state.u,
+                     current[j],
+                     parameters);
+    current[j] = face;
     if (face == Surface::invalid)
       return; // no projection: the node is inactive
 
@@ -354,16 +327,33 @@ namespace ContactDynamics
       const std::array<AD, 2> lambda_t{
         {variables.multiplier(), variables.multiplier()}};
 
-      const auto y = face_nodes(p, face, xp);
-      AD         xi(parameters[0]), eta(parameters[1]);
-      if (exact)
-        projection_parameters(y, x, parameters, xi, eta);
-      const Vec3<AD> normal =
-        contact_normal(p, face, y, xp, xi, eta, smoothing_distance, exact);
-
-      const auto     N   = shape(xi, eta);
-      const Vec3<AD> x_p = interpolate(y, xi, eta);
-      const AD       g   = (x - x_p) * normal;
+      std::vector<AD> N;
+      Vec3<AD>        x_p, normal;
+      if (p.degree == 2)
+        NodeProjection3D::Quadratic::contact_geometry(p,
+                                                      face,
+                                                      xp,
+                                                      x,
+                                                      parameters,
+                                                      on_surface,
+                                                      exact,
+                                                      smoothing_distance,
+                                                      N,
+                                                      x_p,
+                                                      normal);
+      else
+        {
+          const auto y = face_nodes(p, face, xp);
+          AD         xi(parameters[0]), eta(parameters[1]);
+          if (exact)
+            projection_parameters(y, x, parameters, xi, eta);
+          normal =
+            contact_normal(p, face, y, xp, xi, eta, smoothing_distance, exact);
+          const auto shape_values = shape(xi, eta);
+          N.assign(shape_values.begin(), shape_values.end());
+          x_p = interpolate(y, xi, eta);
+        }
+      const AD g = (x - x_p) * normal;
       ContactAD::add_to(pair.gap[j], g, unknowns);
       pair.weight[j].value += 1.;
 
@@ -383,8 +373,8 @@ namespace ContactDynamics
       if ((this->complementarity.holds_contact() && state.dynamic) || friction)
         {
           Vec3<AD> v_rel = v;
-          for (unsigned int a = 0; a < 4; ++a)
-            v_rel -= N[a] * vp.at(p.faces[face][a]);
+          for (unsigned int a = 0; a < N.size(); ++a)
+            v_rel -= N[a] * vp.at(p.face_nodes[face][a]);
           ContactAD::add_to(pair.gap_rate[j],
                             AD(-(v_rel * n_secondary)),
                             unknowns);

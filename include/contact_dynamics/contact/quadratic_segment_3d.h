@@ -181,6 +181,23 @@ namespace ContactDynamics
     }
 
     /**
+     * The start of the closest point of p on face x: its projection onto
+     * the face's tangent plane at the centre (Newton's steps are limited,
+     * and a point many faces away would exhaust them from the centre).
+     */
+    inline std::array<double, 2>
+    affine_guess(const Face<double> &x, const Vec3<double> &p)
+    {
+      const auto         s    = shape(0.5, 0.5);
+      const Vec3<double> d    = p - combine(x, s.N);
+      const Vec3<double> t[2] = {combine(x, s.dN[0]), combine(x, s.dN[1])};
+      const std::array<std::array<double, 2>, 2> A = {
+        {{{t[0] * t[0], t[0] * t[1]}}, {{t[1] * t[0], t[1] * t[1]}}}};
+      const auto y = solve<double, 2>(A, {{t[0] * d, t[1] * d}});
+      return {{0.5 + y[0], 0.5 + y[1]}};
+    }
+
+    /**
      * Newton on system(y, r, J) in double from y, with steps limited to
      * `limit` in the face's coordinates; false without convergence.
      */

@@ -120,18 +120,19 @@ namespace ContactDynamics
             for (unsigned int d = 0; d < 3; ++d)
               pd[d] = value_of(x[d]);
             // (from the previous point's solution: the next root along
-            // the edge, not a spurious one of the face's extension)
+            // the edge, not a spurious one of the face's extension; else
+            // from the tangent plane's)
+            const auto system = [&](const auto &z, auto &r, auto &J) {
+              closest_point_system(xsd, pd, z, r, J);
+            };
             std::array<double, 2> y =
               polygon.empty() ?
-                std::array<double, 2>{{0.5, 0.5}} :
+                affine_guess(xsd, pd) :
                 std::array<double, 2>{{value_of(polygon.back().s[0]),
                                        value_of(polygon.back().s[1])}};
-            if (!newton<2>(
-                  [&](const auto &z, auto &r, auto &J) {
-                    closest_point_system(xsd, pd, z, r, J);
-                  },
-                  y,
-                  0.5))
+            if (!newton<2>(system, y, 0.5) &&
+                (polygon.empty() ||
+                 !newton<2>(system, y = affine_guess(xsd, pd), 0.5)))
               return false;
             Corner<Number> c;
             c.s = refine<Number, 2>(
