@@ -21,7 +21,6 @@ namespace ContactDynamics
   {
     using namespace ClippingGeometry;
     using NodeProjection3D::edge_point;
-    using NodeProjection3D::end_weight;
     using NodeProjection3D::projection_edge;
 
     Vec3<double>
@@ -168,38 +167,109 @@ namespace ContactDynamics
         }
     }
 
-    // The contact normal at (xi, eta) of the primary face: the face's
-    // normal, blended near the edges into the interpolated nodal normals;
-    // frozen (no derivatives) unless `exact`
+    // At the projection (parameters) of x onto the bilinear primary face
+    // `face`: the shape functions N, the point x_p and the contact normal
+    // (the face's normal, blended near the edges into the interpolated
+    // nodal normals), with exact derivatives or the parameters and the
+    // normal frozen
     template <typename AD>
-    Vec3<AD>
-    contact_normal(const Surface                 &p,
-                   const unsigned int             face,
-                   const std::array<Vec3<AD>, 4> &y,
-                   const NodeMap<AD>             &xp,
-                   const AD                      &xi,
-                   const AD                      &eta,
-                   const double                   smoothing_distance,
-                   const bool                     exact)
+    void
+    linear_contact_geometry(const Surface               &p,
+                            const unsigned int           face,
+                            const NodeMap<AD>           &xp,
+                            const Vec3<AD>              &x,
+                            const std::array<double, 2> &parameters,
+                            const bool                   exact,
+                            const double                 smoothing,
+                            std::vector<AD>             &N,
+                            Vec3<AD>                    &x_p,
+                            Vec3<AD>                    &normal)
     {
-      Vec3<AD> normal = face_normal(y, xi, eta);
-      if (smoothing_distance > 0)
-        {
-          // blended near the edges into the interpolated nodal normals
-          const auto N = shape(xi, eta);
-          Vec3<AD>   interpolated;
-          for (unsigned int a = 0; a < 4; ++a)
-            interpolated += N[a] * nodal_normal(p, p.faces[face][a], xp);
-          const AD w_xi  = end_weight(xi, smoothing_distance),
-                   w_eta = end_weight(eta, smoothing_distance);
-          const AD w     = 1. - (1. - w_xi) * (1. - w_eta);
-          normal += w * (interpolated / norm(interpolated) - normal);
-          normal /= norm(normal);
-        }
-      if (!exact)
-        for (unsigned int d = 0; d < 3; ++d)
-          normal[d] = AD(normal[d].val());
-      return normal;
+      const auto y = face_nodes(p, face, xp);
+      AD         xi(parameters[0]), eta(parameters[1]);
+      if (exact)
+        projection_parameters(y, x, parameters, xi, eta);
+      const auto shape_values = shape(xi, eta);
+      normal                  = NodeProjection3D::smoothed_normal(p,
+                                                 face,
+                                                 shape_values,
+                                                 xp,
+                                                 xi,
+                                                 eta,
+                                                 smoothing,
+                                                 exact,
+                                                 face_normal(y, xi, eta));
+      N.assign(shape_values.begin(), shape_values.end());
+      x_p = interpolate(y, xi, eta);
+    }
+
+    // A node's projection: the face (invalid: none), the parameters on it
+    // and whether they solve the face's closest-point system (degree 2)
+    struct Projection
+    {
+      unsigned int          face = Surface::invalid;
+      std::array<double, 2> parameters{};
+      bool                  on_surface = false;
+    };
+
+    Projection
+    project(const Surface                       &s,
+            const Surface                       &p,
+            const unsigned int                   j,
+            const std::vector<unsigned int>     &candidates,
+            const TrilinosWrappers::MPI::Vector &u,
+            const unsigned int                   previous)
+    {
+      Projection r;
+      r.face = p.degree == 2 ?
+                 NodeProjection3D::Quadratic::closest_face(s,
+                                                           p,
+                                                           j,
+                                                           candidates,
+                                                           u,
+                                                           previous,
+                                                           r.parameters,
+                                                           r.on_surface) :
+                 closest_face(s, p, j, candidates, u, previous, r.parameters);
+      return r;
+    }
+
+    // N, x_p and the contact normal at the projection, of either degree
+    template <typename AD>
+    void
+    geometry(const Surface     &p,
+             const Projection  &projection,
+             const NodeMap<AD> &xp,
+             const Vec3<AD>    &x,
+             const bool         exact,
+             const double       smoothing,
+             std::vector<AD>   &N,
+             Vec3<AD>          &x_p,
+             Vec3<AD>          &normal)
+    {
+      if (p.degree == 2)
+        NodeProjection3D::Quadratic::contact_geometry(p,
+                                                      projection.face,
+                                                      xp,
+                                                      x,
+                                                      projection.parameters,
+                                                      projection.on_surface,
+                                                      exact,
+                                                      smoothing,
+                                                      N,
+                                                      x_p,
+                                                      normal);
+      else
+        linear_contact_geometry(p,
+                                projection.face,
+                                xp,
+                                x,
+                                projection.parameters,
+                                exact,
+                                smoothing,
+                                N,
+                                x_p,
+                                normal);
     }
 
     // The nodal force f (tangential part f_t) on secondary node j and,
@@ -288,26 +358,10 @@ namespace ContactDynamics
     const std::ptrdiff_t pair_index = &pair - this->pairs.data();
     auto                &current    = trial_face[pair_index];
     current.resize(s.n_nodes(), Surface::invalid);
-    std::array<double, 2> parameters;
-    bool                  on_surface = false;
-    const unsigned int    face =
-      p.degree == 2 ?
-           NodeProjection3D::Quadratic::closest_face(s,
-                                                  p,
-                                                  j,
-                                                  pair.candidates[j],
-                                                  state.u,
-                                                  current[j],
-                                                  parameters,
-                                                  on_surface) :
-           closest_face(s,
-                     p,
-                     j,
-                     pair.candidates[j],
-                     state.u,
-                     current[j],
-                     parameters);
-    current[j] = face;
+    const Projection projection =
+      project(s, p, j, pair.candidates[j], state.u, current[j]);
+    const unsigned int face = projection.face;
+    current[j]              = face;
     if (face == Surface::invalid)
       return; // no projection: the node is inactive
 
@@ -329,30 +383,7 @@ namespace ContactDynamics
 
       std::vector<AD> N;
       Vec3<AD>        x_p, normal;
-      if (p.degree == 2)
-        NodeProjection3D::Quadratic::contact_geometry(p,
-                                                      face,
-                                                      xp,
-                                                      x,
-                                                      parameters,
-                                                      on_surface,
-                                                      exact,
-                                                      smoothing_distance,
-                                                      N,
-                                                      x_p,
-                                                      normal);
-      else
-        {
-          const auto y = face_nodes(p, face, xp);
-          AD         xi(parameters[0]), eta(parameters[1]);
-          if (exact)
-            projection_parameters(y, x, parameters, xi, eta);
-          normal =
-            contact_normal(p, face, y, xp, xi, eta, smoothing_distance, exact);
-          const auto shape_values = shape(xi, eta);
-          N.assign(shape_values.begin(), shape_values.end());
-          x_p = interpolate(y, xi, eta);
-        }
+      geometry(p, projection, xp, x, exact, smoothing_distance, N, x_p, normal);
       const AD g = (x - x_p) * normal;
       ContactAD::add_to(pair.gap[j], g, unknowns);
       pair.weight[j].value += 1.;

@@ -25,9 +25,9 @@ namespace ContactDynamics
       "With 2, contact works against rigid obstacles (Contact/Rigid "
       "obstacles; every node of a contact face, mid-side and centre nodes "
       "too, is a contact node, both formulations), between two meshed "
-      "surfaces in 2-D (3-node curved faces), and in 2-D with Mesh "
-      "refinement/Adapt to contact; in 3-D a pair of two meshed surfaces, "
-      "and adaptation to contact, are refused with 2 so far.");
+      "surfaces (3-node curved faces in 2-D, 9-node ones in 3-D; in 3-D "
+      "dual mortar with friction is refused with 2 so far), and with Mesh "
+      "refinement/Adapt to contact.");
   }
 
   template <int dim>

@@ -19,6 +19,7 @@ namespace ContactDynamics
   namespace NodeProjection3D
   {
     using ClippingGeometry::NodeMap;
+    using ClippingGeometry::norm;
     using ClippingGeometry::Surface;
     using ClippingGeometry::Vec3;
 
@@ -72,6 +73,43 @@ namespace ContactDynamics
       if (to_end.val() <= 0)
         return Number(1.);
       return Number((distance - to_end) / distance);
+    }
+
+    /**
+     * The contact normal of primary face f near its edges: the face's
+     * unit normal blended within `smoothing` of them into the nodal
+     * normals interpolated with the face's shape functions N (of its
+     * nodes, in the order of face_nodes); frozen (no derivatives) unless
+     * `exact`.
+     */
+    template <typename AD, typename Weights>
+    Vec3<AD>
+    smoothed_normal(const Surface     &p,
+                    const unsigned int f,
+                    const Weights     &N,
+                    const NodeMap<AD> &xp,
+                    const AD          &xi,
+                    const AD          &eta,
+                    const double       smoothing,
+                    const bool         exact,
+                    Vec3<AD>           normal)
+    {
+      if (smoothing > 0)
+        {
+          Vec3<AD> interpolated;
+          for (unsigned int a = 0; a < N.size(); ++a)
+            interpolated +=
+              N[a] * ClippingGeometry::nodal_normal(p, p.face_nodes[f][a], xp);
+          const AD w_xi  = end_weight(xi, smoothing),
+                   w_eta = end_weight(eta, smoothing);
+          const AD w     = 1. - (1. - w_xi) * (1. - w_eta);
+          normal += w * (interpolated / norm(interpolated) - normal);
+          normal /= norm(normal);
+        }
+      if (!exact)
+        for (unsigned int d = 0; d < 3; ++d)
+          normal[d] = AD(normal[d].val());
+      return normal;
     }
 
     namespace Quadratic
@@ -271,23 +309,15 @@ namespace ContactDynamics
         const auto s = shape(q[0], q[1]);
         N.assign(s.N.begin(), s.N.end());
         x_p    = combine(y, s.N);
-        normal = unit_normal(y, s);
-        if (smoothing > 0)
-          {
-            Vec3<AD> interpolated;
-            for (unsigned int a = 0; a < 9; ++a)
-              interpolated +=
-                s.N[a] *
-                ClippingGeometry::nodal_normal(p, p.face_nodes[f][a], xp);
-            const AD w_xi  = end_weight(q[0], smoothing),
-                     w_eta = end_weight(q[1], smoothing);
-            const AD w     = 1. - (1. - w_xi) * (1. - w_eta);
-            normal += w * (interpolated / norm(interpolated) - normal);
-            normal /= norm(normal);
-          }
-        if (!exact)
-          for (unsigned int d = 0; d < 3; ++d)
-            normal[d] = AD(normal[d].val());
+        normal = smoothed_normal(p,
+                                 f,
+                                 s.N,
+                                 xp,
+                                 q[0],
+                                 q[1],
+                                 smoothing,
+                                 exact,
+                                 unit_normal(y, s));
       }
     } // namespace Quadratic
   }   // namespace NodeProjection3D
