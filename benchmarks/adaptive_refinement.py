@@ -167,15 +167,19 @@ def sphere_degree2(exe, factors):
     (frictionless dual mortar on 9-node faces, exact Jacobian): uniform
     meshes at the larger load, and meshes adapted to the contact from
     factor 0.25 (3 and 4 levels, buffer 1) at both loads of the degree-1
-    study."""
+    study, and node-to-segment on the first adapted mesh."""
     rows = []
     runs = [(0.002, "uniform", f, 0, {"Scene/Refinement factor": str(f)}) for f in factors]
     runs += [(load, "adaptive", 0.25, n, {
         "Scene/Refinement factor": "0.25", "Mesh refinement/Adapt to contact": "true",
         "Mesh refinement/Maximum levels": str(n), "Mesh refinement/Passes per step": str(n + 1),
         "Mesh refinement/Buffer cells": "1"}) for load in (0.002, 0.0005) for n in (3, 4)]
+    # node-to-segment of degree 2 on the first adapted mesh
+    runs.append((0.002, "adaptive, node-to-segment", 0.25, 3,
+                 {**runs[len(factors)][4], "Contact/Formulation": "nts"}))
     for load, kind, f, n, changes in runs:
-        directory, memory = run(exe, f"sphere_{load:g}_degree2_{kind}_{f:g}_{n}",
+        directory, memory = run(exe, f"sphere_{load:g}_degree2_{kind.split(',')[0]}"
+                                f"{'_nts' if 'node' in kind else ''}_{f:g}_{n}",
                                 "prm/examples/hertz_3d.prm", {
             "Boundary conditions/Dirichlet":
             "block_bottom: xyz: 0; block_left: x: 0; block_front: z: 0; "
@@ -185,6 +189,8 @@ def sphere_degree2(exe, factors):
         stats = avc.read_csv(directory / "statistics.csv")
         mesh = (f"degree 2, uniform, factor {f:g}" if kind == "uniform" else
                 f"degree 2, factor {f:g} + {n} levels, buffer 1")
+        if "node-to-segment" in kind:
+            mesh += ", node-to-segment"
         rows.append(dict(load=load, mesh=mesh, unknowns=unknowns_of(directory, stats),
                          wall=float(stats["wall_time"][-1]), memory=memory,
                          **sphere_errors(directory, stats)))

@@ -27,7 +27,7 @@
 // on the refined interface (hanging nodes with the weights 3/8, 3/4, -1/8
 // of their coarse edge), and node-to-segment (closest points on the curved
 // faces or their curved edges; the normal smoothed into the nodal normals
-// interpolated with the 9 shape functions; friction).
+// interpolated with the 9 shape functions; friction; the refined interface).
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
 
@@ -399,6 +399,14 @@ main()
         false,
         0.3,
         false,
+        2);
+  check("nts degree 2, refined, quasi-static, exact",
+        "quasi-static",
+        "exact",
+        false,
+        false,
+        0,
+        true,
         2);
   check("nts degree 2 smoothed, friction, held",
         "newmark",

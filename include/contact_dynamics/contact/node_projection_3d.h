@@ -217,6 +217,8 @@ namespace ContactDynamics
 
         unsigned int best          = Surface::invalid;
         double       best_distance = 1e300;
+        // the previous face's distance, size, parameters and `within`
+        std::array<double, 5> kept{{1e300, 0., 0., 0., 0.}};
         for (const unsigned int f : candidates)
           {
             Face<double> y;
@@ -257,6 +259,8 @@ namespace ContactDynamics
                 return f;
               }
             const double distance = norm(x - combine(y, shape(t[0], t[1]).N));
+            if (f == previous)
+              kept = {{distance, norm(y[3] - y[0]), t[0], t[1], within}};
             if (distance < best_distance)
               {
                 best            = f;
@@ -264,6 +268,17 @@ namespace ContactDynamics
                 best_parameters = t;
                 on_surface      = within;
               }
+          }
+        // beyond the surface's boundary, at a corner two faces share, their
+        // closest points nearly coincide, and switching between their
+        // normals at every iteration stalled Newton (a 2-cycle on the 3-D
+        // bouncing block): the previous face is kept while it is within the
+        // tolerance of the closest
+        if (kept[0] <= best_distance + tolerance * kept[1])
+          {
+            best_parameters = {{kept[2], kept[3]}};
+            on_surface      = kept[4] != 0;
+            return previous;
           }
         return best;
       }
