@@ -23,11 +23,15 @@
 // whose gap sums join their parents' and whose forces go to them), the
 // same checks with the trial state and the direction satisfying the
 // hanging-node constraints, on the rows that are not constrained.
-// Degree 2 (9-node faces): dual mortar (segments on the curved faces), also
+// Degree 2 (9-node faces): dual mortar (segments on the curved faces), with
+// friction (the mortar factors of the dual basis of the covered part, the
+// tangents of the nodal normals averaged over the curved faces), also
 // on the refined interface (hanging nodes with the weights 3/8, 3/4, -1/8
 // of their coarse edge), and node-to-segment (closest points on the curved
 // faces or their curved edges; the normal smoothed into the nodal normals
 // interpolated with the 9 shape functions; friction; the refined interface).
+#include <deal.II/fe/mapping_q1.h>
+
 #include <contact_dynamics/contact/surface_contact.h>
 #include <contact_dynamics/simulator.h>
 
@@ -245,37 +249,50 @@ end
       check_true(name + ": force rows differ from FD by more than 1e-3",
                  force_error > 1e-3);
 
-    // (the momentum check below sums the vertices' forces: degree 1)
-    if (held || jacobian != "exact" || degree != 1)
+    if (held || jacobian != "exact")
       return;
     // momentum: the contact forces alone are the residual with the
     // multipliers minus the residual without them (the bulk terms cancel);
-    // no surface node is held by a Dirichlet condition here
+    // no surface node is held by a Dirichlet condition here. Node k of a
+    // cell carries f_k = int N_k t: sum_k x_k x f_k is the moment of the
+    // traction for an isoparametric field of any degree.
     VectorType without(trial), r0(trial);
     for (const auto i : lambda)
       without(i) = 0;
     simulator.residual_and_jacobian(without, 0.01, r0);
     r -= r0;
-    Tensor<1, 3>      force, moment, one_side;
-    std::vector<bool> seen(trial.size(), false);
-    for (const auto &cell : simulator.get_dof_handler().active_cell_iterators())
-      for (const auto v : cell->vertex_indices())
-        {
-          if (seen[cell->vertex_dof_index(v, 0)])
-            continue;
-          seen[cell->vertex_dof_index(v, 0)] = true;
-          Tensor<1, 3> f;
-          Point<3>     x = cell->vertex(v);
-          for (unsigned int d = 0; d < 3; ++d)
-            {
-              f[d] = r(cell->vertex_dof_index(v, d));
-              x[d] += trial(cell->vertex_dof_index(v, d));
-            }
-          force += f;
-          moment += cross_product_3d(x, f);
-          if (cell->material_id() == 0)
-            one_side += f;
-        }
+    Tensor<1, 3>       force, moment, one_side;
+    std::vector<bool>  seen(trial.size(), false);
+    const auto        &dof_handler = simulator.get_dof_handler();
+    const auto        &fe          = dof_handler.get_fe();
+    const auto        &base        = fe.base_element(0);
+    const MappingQ1<3> mapping;
+    std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(local);
+        for (unsigned int k = 0; k < base.n_dofs_per_cell(); ++k)
+          {
+            const auto first = local[fe.component_to_system_index(0, k)];
+            if (seen[first])
+              continue;
+            seen[first] = true;
+            Tensor<1, 3> f;
+            Point<3>     x =
+              mapping.transform_unit_to_real_cell(cell,
+                                                  base.unit_support_point(k));
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                const auto i = local[fe.component_to_system_index(d, k)];
+                f[d]         = r(i);
+                x[d] += trial(i);
+              }
+            force += f;
+            moment += cross_product_3d(x, f);
+            if (cell->material_id() == 0)
+              one_side += f;
+          }
+      }
     deallog << name << ": contact force on the upper body " << one_side.norm()
             << std::endl;
     check_close(name + ": |sum of contact forces| / |force on one body|",
@@ -384,6 +401,22 @@ main()
   // node-to-segment of degree 2: closest points on the curved faces, on
   // their surface or their curved edges, the normal smoothed near the
   // edges into the nodal normals interpolated with the 9 shape functions
+  check("degree 2, friction, quasi-static",
+        "quasi-static",
+        "exact",
+        false,
+        true,
+        -1,
+        false,
+        2);
+  check("degree 2, friction, held",
+        "newmark",
+        "exact",
+        true,
+        true,
+        -1,
+        false,
+        2);
   check("nts degree 2, quasi-static, exact",
         "quasi-static",
         "exact",

@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <map>
 #include <optional>
 #include <set>
@@ -491,34 +490,6 @@ namespace ContactDynamics
                     std::to_string(point.size()) +
                     " coordinates; with Dimension = " + std::to_string(dim) +
                     " give " + (dim == 2 ? "'x, y'." : "'x, y, z'.")));
-
-    prm.enter_subsection("Finite element");
-    const auto degree = prm.get_integer("Polynomial degree");
-    prm.leave_subsection();
-    // degree 2 between two meshed surfaces in 3-D: dual mortar without
-    // friction so far (node-to-segment with or without)
-    const bool is_mortar =
-      contact.formulation == ContactParameters::Formulation::mortar;
-    if (is_mortar)
-      for (const ContactPair &pair : contact.pairs)
-        AssertThrow(degree == 1 || pair.obstacle >= 0 || dim == 2 ||
-                      pair.friction_coefficient == 0,
-                    ExcMessage(
-                      "'Finite element/Polynomial degree' is " +
-                      std::to_string(degree) + ", and the contact pair '" +
-                      pair.name +
-                      "' is between two meshed surfaces in 3-D with a "
-                      "friction coefficient of " +
-                      [&]() {
-                        std::ostringstream value;
-                        value << pair.friction_coefficient;
-                        return value.str();
-                      }() +
-                      ": with degree 2, dual mortar with friction between "
-                      "meshed surfaces in 3-D is not built yet. Use "
-                      "Formulation = node-to-segment, degree 1, a friction "
-                      "coefficient of 0, or a rigid obstacle as the primary "
-                      "side."));
 
     switch (contact.formulation)
       {

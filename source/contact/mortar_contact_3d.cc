@@ -93,41 +93,40 @@ namespace ContactDynamics
       return direction;
     }
 
-    // Adds the friction forces of face e to `forces` and its nodes' slip
-    // rates to the pair's
-    template <typename PairData, typename PatchForces>
-    void
-    add_friction(PairData                                   &pair,
-                 const unsigned int                          e,
-                 const MortarFace3D::FrictionTerms          &f,
-                 const std::vector<types::global_dof_index> &unknowns,
-                 const unsigned int                          n_positions,
-                 PatchForces                                &forces)
-    {
-      const auto &face = pair.secondary.faces[e];
-      for (unsigned int i = 0; i < n_positions; ++i)
-        {
-          typename PatchForces::Derivatives derivatives;
-          for (unsigned int l = 0; l < f.d_force[i].size(); ++l)
-            if (f.d_force[i][l] != 0)
-              derivatives.emplace_back(unknowns[l], f.d_force[i][l]);
-          if (f.force[i] != 0 || !derivatives.empty())
-            {
-              forces.add(unknowns[i], f.force[i], std::move(derivatives));
-              forces.add_tangential(unknowns[i], f.force[i]);
-            }
-        }
-      for (unsigned int j = 0; j < 4; ++j)
-        for (unsigned int a = 0; a < 2; ++a)
-          {
-            LinearizedValue &slip = pair.slip_rate[face[j]][a];
-            slip.value += f.slip[j][a];
-            for (unsigned int i = 0; i < n_positions; ++i)
-              if (f.d_slip[j][a][i] != 0)
-                slip.derivatives[unknowns[i]] += f.d_slip[j][a][i];
-          }
-    }
   } // namespace
+
+  template <>
+  void
+  MortarContact<3>::add_friction(
+    PairData                                   &pair,
+    const std::vector<unsigned int>            &face,
+    const MortarFace3D::FrictionTerms          &f,
+    const std::vector<types::global_dof_index> &unknowns,
+    const unsigned int                          n_positions,
+    PatchForces                                &forces) const
+  {
+    for (unsigned int i = 0; i < n_positions; ++i)
+      {
+        typename PatchForces::Derivatives derivatives;
+        for (unsigned int l = 0; l < f.d_force[i].size(); ++l)
+          if (f.d_force[i][l] != 0)
+            derivatives.emplace_back(unknowns[l], f.d_force[i][l]);
+        if (f.force[i] != 0 || !derivatives.empty())
+          {
+            forces.add(unknowns[i], f.force[i], std::move(derivatives));
+            forces.add_tangential(unknowns[i], f.force[i]);
+          }
+      }
+    for (unsigned int j = 0; j < face.size(); ++j)
+      for (unsigned int a = 0; a < 2; ++a)
+        {
+          LinearizedValue &slip = pair.slip_rate[face[j]][a];
+          slip.value += f.slip[j][a];
+          for (unsigned int i = 0; i < n_positions; ++i)
+            if (f.d_slip[j][a][i] != 0)
+              slip.derivatives[unknowns[i]] += f.d_slip[j][a][i];
+        }
+  }
 
   template <>
   std::vector<types::global_dof_index>
@@ -245,6 +244,12 @@ namespace ContactDynamics
                                    velocity,
                                    state.c_v,
                                    lambda_t);
-    add_friction(pair, e, f, unknowns, n_positions, forces);
+    const auto &face = pair.secondary.faces[e];
+    add_friction(pair,
+                 std::vector<unsigned int>(face.begin(), face.end()),
+                 f,
+                 unknowns,
+                 n_positions,
+                 forces);
   }
 } // namespace ContactDynamics

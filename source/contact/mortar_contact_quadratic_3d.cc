@@ -18,7 +18,7 @@
 #include <contact_dynamics/contact/contact_ad.h>
 #include <contact_dynamics/contact/kept_multiplier_nodes.h>
 #include <contact_dynamics/contact/mortar_contact.h>
-#include <contact_dynamics/contact/quadratic_segment_moments_3d.h>
+#include <contact_dynamics/contact/quadratic_mortar_face_3d.h>
 #include <contact_dynamics/contact/reverse_hessian_sweep.h>
 
 #include <algorithm>
@@ -30,20 +30,32 @@ namespace ContactDynamics
   namespace
   {
     using namespace QuadraticSegment3D;
-    constexpr int n_v = 54; // a segment's variables: x_s, then x_m
-    using Map9        = std::array<std::array<double, 9>, 9>;
 
-    // the patch's nodes: the face's 9 (first), then the candidates' primary
-    // nodes; node k's position is entries 3 k to 3 k + 2
+    // the patch's nodes: the face's 9 (first), with friction the other
+    // secondary nodes of the faces around them (their nodal normals), then
+    // the candidates' primary nodes; node k's position is entries 3 k to
+    // 3 k + 2
     template <typename PairData>
     std::vector<std::pair<bool, unsigned int>>
     patch_nodes_3d(const PairData                  &pair,
                    const unsigned int               e,
                    const std::vector<unsigned int> &faces)
     {
+      const auto                                &s = pair.secondary;
       std::vector<std::pair<bool, unsigned int>> nodes;
-      for (const unsigned int n : pair.secondary.face_nodes[e])
+      for (const unsigned int n : s.face_nodes[e])
         nodes.emplace_back(true, n);
+      if (pair.friction_coefficient > 0)
+        {
+          std::set<unsigned int> ring;
+          for (const unsigned int n : s.face_nodes[e])
+            for (const unsigned int f : s.node_faces[n])
+              ring.insert(s.face_nodes[f].begin(), s.face_nodes[f].end());
+          for (const unsigned int n : s.face_nodes[e])
+            ring.erase(n);
+          for (const unsigned int n : ring)
+            nodes.emplace_back(true, n);
+        }
       std::set<unsigned int> primary;
       for (const unsigned int f : faces)
         primary.insert(pair.primary.face_nodes[f].begin(),
@@ -52,18 +64,6 @@ namespace ContactDynamics
         nodes.emplace_back(false, n);
       return nodes;
     }
-
-    // what a face's segments give: the summed moments, d moment_q / dx_i
-    // in gradient[q n_x + i], and per covering segment its primary face and
-    // where its 54 variables sit in the patch positions
-    struct FaceMoments
-    {
-      std::array<double, n_moments>          total{};
-      std::vector<double>                    gradient;
-      std::vector<unsigned int>              covering;
-      std::vector<std::array<unsigned, n_v>> variables;
-      std::vector<EdgePoints>                edge_points; // per segment
-    };
 
     template <typename Number>
     void
@@ -99,7 +99,8 @@ namespace ContactDynamics
                  const double                                      c_v,
                  const bool                                        rates,
                  const TriangleRule                               &rule,
-                 const unsigned int                                edge_points)
+                 const unsigned int                                edge_points,
+                 const bool                                        friction)
     {
       // (edges that finer faces hang on: their points, so that the
       // segments of coarse and fine primary faces tile)
@@ -115,7 +116,8 @@ namespace ContactDynamics
       const unsigned int                   n_x = position.size();
       std::map<unsigned int, unsigned int> primary_index;
       for (unsigned int k = 9; k < nodes.size(); ++k)
-        primary_index[nodes[k].second] = 3 * k;
+        if (!nodes[k].first)
+          primary_index[nodes[k].second] = 3 * k;
       FaceMoments result;
       result.gradient.assign(n_moments * n_x, 0.);
       for (const unsigned int pf : pair.candidates[e])
@@ -140,6 +142,7 @@ namespace ContactDynamics
           if (ns * nm >= 0)
             continue;
           std::array<AD, n_moments> m;
+          std::array<AD, 81>        P;
           const EdgePoints          points = points_of(pf);
           const bool                ok     = segment_moments(xs,
                                           xm,
@@ -147,13 +150,25 @@ namespace ContactDynamics
                                           points,
                                           rates ? &vs : nullptr,
                                           rates ? &vm : nullptr,
-                                          m);
+                                          m,
+                                          friction ? &P : nullptr);
           if (!ok || value_of(m[9] + m[10] + m[11] + m[12] + m[13] + m[14] +
                               m[15] + m[16] + m[17]) <= 0)
             continue;
           result.covering.push_back(pf);
           result.variables.push_back(index);
           result.edge_points.push_back(points);
+          if (friction)
+            {
+              auto &values = result.coupling.emplace_back();
+              auto &d      = result.d_coupling.emplace_back();
+              for (unsigned int q = 0; q < 81; ++q)
+                {
+                  values[q] = P[q].val();
+                  for (int v = 0; v < n_v; ++v)
+                    d[q][v] = P[q].dx(v);
+                }
+            }
           for (unsigned int q = 0; q < n_moments; ++q)
             {
               result.total[q] += m[q].val();
@@ -252,36 +267,6 @@ namespace ContactDynamics
     gap_variable(const unsigned int a)
     {
       return a < 9 ? a : a + 9;
-    }
-
-    // K = M'^-1, M' = T M T^T with ones on the diagonal of dropped nodes
-    template <typename Number>
-    std::array<std::array<Number, 9>, 9>
-    primed_inverse(const std::array<Number, n_moments> &m, const Map9 &T)
-    {
-      std::array<std::array<Number, 9>, 9> M, TM, Mp;
-      for (unsigned int j = 0, jk = 18; j < 9; ++j)
-        for (unsigned int k = j; k < 9; ++k, ++jk)
-          M[j][k] = M[k][j] = m[jk];
-      for (unsigned int j = 0; j < 9; ++j)
-        for (unsigned int k = 0; k < 9; ++k)
-          {
-            TM[j][k] = Number(0.);
-            for (unsigned int l = 0; l < 9; ++l)
-              if (T[j][l] != 0)
-                TM[j][k] += T[j][l] * M[l][k];
-          }
-      for (unsigned int j = 0; j < 9; ++j)
-        for (unsigned int k = 0; k < 9; ++k)
-          {
-            Mp[j][k] = Number(T[j][j] == 0 && j == k ? 1. : 0.);
-            for (unsigned int l = 0; l < 9; ++l)
-              if (T[k][l] != 0)
-                Mp[j][k] += TM[j][l] * T[k][l];
-          }
-      std::array<Number, 9> ones;
-      ones.fill(Number(1.));
-      return ClippingGeometry::dual_from_moments(ones, Mp);
     }
 
     template <typename Number>
@@ -565,6 +550,10 @@ namespace ContactDynamics
           (secondary ? pair.secondary : pair.primary).dofs[n][d]);
     for (const unsigned int n : pair.secondary.face_nodes[e])
       unknowns.push_back(pair.secondary.dofs[n][3]);
+    if (pair.friction_coefficient > 0)
+      for (const unsigned int n : pair.secondary.face_nodes[e])
+        for (const unsigned int c : {4, 5})
+          unknowns.push_back(pair.secondary.dofs[n][c]);
     return unknowns;
   }
 
@@ -581,6 +570,7 @@ namespace ContactDynamics
     const auto unknowns = quadratic_patch_unknowns(pair, e, pair.candidates[e]);
     const bool exact    = this->complementarity.exact_jacobian;
     const bool rates = this->complementarity.holds_contact() && state.dynamic;
+    const bool friction = pair.friction_coefficient > 0;
     const TriangleRule &rule =
       ClippingGeometry::triangle_rule(std::min(quadrature_points + 1, 7u));
     const unsigned int  n_x = 3 * nodes.size();
@@ -604,7 +594,8 @@ namespace ContactDynamics
                                         state.c_v,
                                         rates,
                                         rule,
-                                        segment_edge_points);
+                                        segment_edge_points,
+                                        friction);
     Face<double>      xs;
     for (unsigned int i = 0; i < 27; ++i)
       xs[i / 3][i % 3] = position[i];
@@ -641,5 +632,30 @@ namespace ContactDynamics
                            direction,
                            hessian,
                            [](unsigned int, auto &) {});
+    if (!friction)
+      return;
+
+    std::vector<unsigned int>          secondary;
+    std::vector<std::array<double, 2>> lambda_t(9);
+    for (const auto &[on_secondary, n] : nodes)
+      if (on_secondary)
+        secondary.push_back(n);
+    for (unsigned int j = 0; j < 9; ++j)
+      for (unsigned int a = 0; a < 2; ++a)
+        lambda_t[j][a] = state.u(unknowns[n_x + 9 + 2 * j + a]);
+    add_friction(pair,
+                 pair.secondary.face_nodes[e],
+                 QuadraticSegment3D::friction_terms(pair.secondary,
+                                                    e,
+                                                    secondary,
+                                                    fm,
+                                                    T,
+                                                    position,
+                                                    velocity,
+                                                    state.c_v,
+                                                    lambda_t),
+                 unknowns,
+                 n_x,
+                 forces);
   }
 } // namespace ContactDynamics

@@ -25,8 +25,8 @@ namespace ContactDynamics
       "With 2, contact works against rigid obstacles (Contact/Rigid "
       "obstacles; every node of a contact face, mid-side and centre nodes "
       "too, is a contact node, both formulations), between two meshed "
-      "surfaces (3-node curved faces in 2-D, 9-node ones in 3-D; in 3-D "
-      "dual mortar with friction is refused with 2 so far), and with Mesh "
+      "surfaces (3-node curved faces in 2-D, 9-node ones in 3-D; both "
+      "formulations, with or without friction), and with Mesh "
       "refinement/Adapt to contact.");
   }
 

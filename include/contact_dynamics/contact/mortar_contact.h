@@ -8,6 +8,11 @@
 
 namespace ContactDynamics
 {
+  namespace MortarFace3D
+  {
+    struct FrictionTerms;
+  }
+
   struct MortarParameters
   {
     ComplementarityParameters complementarity;
@@ -121,6 +126,18 @@ namespace ContactDynamics
                              const TrialState  &state,
                              PatchForces       &forces);
 
+    /**
+     * 3-D: adds a face's friction forces to `forces` and the slip rates of
+     * its nodes `face` (4 or 9) to the pair's (mortar_contact_3d.cc).
+     */
+    void
+    add_friction(PairData                                   &pair,
+                 const std::vector<unsigned int>            &face,
+                 const MortarFace3D::FrictionTerms          &f,
+                 const std::vector<types::global_dof_index> &unknowns,
+                 const unsigned int                          n_positions,
+                 PatchForces                                &forces) const;
+
     unsigned int quadrature_points;
     unsigned int segment_edge_points;
   };
@@ -142,8 +159,20 @@ namespace ContactDynamics
                                    const TrialState  &state,
                                    PatchForces       &forces);
 
+  template <>
+  void
+  MortarContact<3>::add_friction(
+    PairData                                   &pair,
+    const std::vector<unsigned int>            &face,
+    const MortarFace3D::FrictionTerms          &f,
+    const std::vector<types::global_dof_index> &unknowns,
+    const unsigned int                          n_positions,
+    PatchForces                                &forces) const;
+
   // 3-D faces of degree 2 (mortar_contact_quadratic_3d.cc): the face's 9
-  // nodes, the primary nodes of the candidates, the 9 normal multipliers
+  // nodes (with friction the secondary nodes around them), the primary
+  // nodes of the candidates, the 9 normal multipliers (with friction the
+  // 18 tangential ones)
   template <>
   std::vector<types::global_dof_index>
   MortarContact<3>::quadratic_patch_unknowns(

@@ -104,18 +104,60 @@ namespace ContactDynamics
     // Coulomb friction on a face, with first derivatives: the forces of the
     // tangential traction z_t = sum_j psi_j lambda_t,j on both sides
     // (lambda_t,j = sum_a lambda_a,j t_a,j along node j's tangents),
-    // D_i lambda_t,i on the secondary nodes and -sum_j M_jk lambda_t,j on
-    // the primary ones, and the slip rates t_a,j . (D_j v_j - sum_k M_jk
-    // v_k) of the face's nodes (= int psi_j v_rel . t_a,j, by the
-    // biorthogonality of the dual basis on the covered part).
+    // sum_j S_jk lambda_t,j on the secondary nodes (S_jk = int psi_j N_k =
+    // D_j delta_jk by biorthogonality where the face is covered) and
+    // -sum_j M_jk lambda_t,j on the primary ones, and the slip rates
+    // t_a,j . (sum_k S_jk v_k - sum_k M_jk v_k) of the face's nodes (=
+    // int psi_j v_rel . t_a,j).
     struct FrictionTerms
     {
-      // per position i; d_force[i][l], l over the positions, then the 4
-      // normal and the 8 tangential multipliers (4 + 2 j + a)
-      std::vector<double>                               force;
-      std::vector<std::vector<double>>                  d_force;
-      std::array<std::array<double, 2>, 4>              slip{};
-      std::array<std::array<std::vector<double>, 2>, 4> d_slip;
+      // per position i; d_force[i][l], l over the positions, then the face's
+      // n normal and 2 n tangential multipliers (n + 2 j + a)
+      std::vector<double>                             force;
+      std::vector<std::vector<double>>                d_force;
+      std::vector<std::array<double, 2>>              slip;
+      std::vector<std::array<std::vector<double>, 2>> d_slip;
+    };
+
+    /**
+     * Builds FrictionTerms from a face's nodal normals (with their
+     * derivatives normal_gradient[(3 j + b) n_ring + i] in the first n_ring
+     * positions), the reference tangent axes of its nodes, the tangential
+     * multipliers and the nodes' velocities: add() takes one mortar factor
+     * (-S_jk for a secondary node k, M_jk for a primary one) with its
+     * derivatives in the positions.
+     */
+    class FrictionAssembler
+    {
+    public:
+      FrictionAssembler(const std::vector<Vec3<double>> &normal,
+                        const std::vector<double>       &normal_gradient,
+                        const unsigned int               n_ring,
+                        const std::vector<unsigned int> &axis,
+                        const std::vector<std::array<double, 2>> &lambda,
+                        const std::vector<double>                &velocity,
+                        const double                              c_v);
+
+      // node k's force -factor lambda_t,j and its part of node j's slip
+      // rates; `first` is where x_k is in the positions
+      void
+      add(const unsigned int         j,
+          const unsigned int         first,
+          const double               factor,
+          const std::vector<double> &d_factor);
+
+      FrictionTerms terms;
+
+    private:
+      const std::vector<double> &velocity;
+      const double               c_v;
+      const unsigned int         n_ring, n_face;
+      // the tangents t[j][a] and their derivatives dt[j][a][c][i] in the
+      // ring positions; lambda_t,j and its derivatives
+      std::vector<std::array<Vec3<double>, 2>>                       t;
+      std::vector<std::array<std::array<std::vector<double>, 3>, 2>> dt;
+      std::vector<Vec3<double>>                                      lt;
+      std::vector<std::array<std::vector<double>, 3>>                dlt;
     };
 
     /**

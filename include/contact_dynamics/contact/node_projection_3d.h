@@ -260,7 +260,8 @@ namespace ContactDynamics
               }
             const double distance = norm(x - combine(y, shape(t[0], t[1]).N));
             if (f == previous)
-              kept = {{distance, norm(y[3] - y[0]), t[0], t[1], within}};
+              kept = {
+                {distance, norm(y[3] - y[0]), t[0], t[1], within ? 1. : 0.}};
             if (distance < best_distance)
               {
                 best            = f;

@@ -161,11 +161,40 @@ namespace ContactDynamics
     }
 
     /**
+     * The centroid of a polygon in the secondary face's coordinates (and
+     * the mean of its corners' primary guesses); false if its area is
+     * nil.
+     */
+    template <typename Number>
+    bool
+    centroid(const std::vector<Corner<Number>> &polygon, Corner<Number> &centre)
+    {
+      Number a = 0., cx = 0., cy = 0.;
+      for (unsigned int k = 0; k < polygon.size(); ++k)
+        {
+          const auto  &p = polygon[k], &q = polygon[(k + 1) % polygon.size()];
+          const Number w = p.s[0] * q.s[1] - q.s[0] * p.s[1];
+          a += w;
+          cx += (p.s[0] + q.s[0]) * w;
+          cy += (p.s[1] + q.s[1]) * w;
+        }
+      if (std::abs(value_of(a)) < 1e-14)
+        return false;
+      centre.s = {{cx / (3. * a), cy / (3. * a)}};
+      centre.p = {{0., 0.}};
+      for (const auto &p : polygon)
+        for (unsigned int d = 0; d < 2; ++d)
+          centre.p[d] += p.p[d] / polygon.size();
+      return true;
+    }
+
+    /**
      * The moments of a segment, index by index: G_j = int N_j g (0 to 8),
      * D_j = int N_j (9 to 17), M_jk = int N_j N_k for j <= k (18 to 62)
      * and, with velocities, R_j = int N_j (v_s - v_m) . n (63 to 71), over
      * the secondary face's part that the primary face covers, g = (x_m -
-     * x_s) . n along the secondary face's unit normal n. False where a
+     * x_s) . n along the secondary face's unit normal n; with `coupling`,
+     * P_lk = int N_l N_k^primary in (*coupling)[9 l + k]. False where a
      * point has no projection onto the primary face.
      */
     constexpr unsigned int n_gap_moments = 63, n_moments = 72;
@@ -178,9 +207,12 @@ namespace ContactDynamics
                     const EdgePoints              &edge_points,
                     const Face<Number>            *vs,
                     const Face<Number>            *vm,
-                    std::array<Number, n_moments> &moments)
+                    std::array<Number, n_moments> &moments,
+                    std::array<Number, 81>        *coupling = nullptr)
     {
       moments.fill(Number(0.));
+      if (coupling != nullptr)
+        coupling->fill(Number(0.));
       std::vector<Corner<Number>> polygon;
       if (!segment_polygon(xs, xm, edge_points, polygon))
         return false;
@@ -192,24 +224,8 @@ namespace ContactDynamics
       // from a corner changed the whole triangulation, and with it the
       // rule's error: Newton stalled)
       Corner<Number> centre;
-      {
-        Number a = 0., cx = 0., cy = 0.;
-        for (unsigned int k = 0; k < polygon.size(); ++k)
-          {
-            const auto  &p = polygon[k], &q = polygon[(k + 1) % polygon.size()];
-            const Number w = p.s[0] * q.s[1] - q.s[0] * p.s[1];
-            a += w;
-            cx += (p.s[0] + q.s[0]) * w;
-            cy += (p.s[1] + q.s[1]) * w;
-          }
-        if (std::abs(value_of(a)) < 1e-14)
-          return true;
-        centre.s = {{cx / (3. * a), cy / (3. * a)}};
-        centre.p = {{0., 0.}};
-        for (const auto &p : polygon)
-          for (unsigned int d = 0; d < 2; ++d)
-            centre.p[d] += p.p[d] / polygon.size();
-      }
+      if (!centroid(polygon, centre))
+        return true;
       for (unsigned int k = 0; k < polygon.size(); ++k)
         {
           const Corner<Number> *c[3] = {&centre,
@@ -262,9 +278,18 @@ namespace ContactDynamics
                   for (unsigned int k = j; k < 9; ++k, ++jk)
                     moments[jk] += Nw * s.N[k];
                 }
+              if (vs == nullptr && coupling == nullptr)
+                continue;
+              const auto Nm = shape(z[0], z[1]).N;
+              if (coupling != nullptr)
+                for (unsigned int l = 0; l < 9; ++l)
+                  {
+                    const Number Nw = s.N[l] * weight;
+                    for (unsigned int k = 0; k < 9; ++k)
+                      (*coupling)[9 * l + k] += Nw * Nm[k];
+                  }
               if (vs == nullptr)
                 continue;
-              const auto   Nm    = shape(z[0], z[1]).N;
               const auto   v_rel = combine(*vs, s.N) - combine(*vm, Nm);
               const Number v_n   = v_rel * n;
               for (unsigned int j = 0; j < 9; ++j)
