@@ -51,7 +51,8 @@ namespace
              const bool         friction,
              const double       smoothing,
              const bool         refined,
-             const unsigned int degree)
+             const unsigned int degree,
+             const double       overhang)
   {
     // smoothing < 0: mortar; else node-to-segment with that smoothing
     // distance (the same complementarity parameters)
@@ -76,8 +77,9 @@ subsection Body upper
   set Young's modulus = 1000
   set Poisson's ratio = 0.3
   set Density = 1
-  set Initial displacement = 0.001*x; )" +
-           offset + R"( + 0.02*((x-0.5)^2 + (z-0.5)^2) + 0.004*x*z; 0.002*z
+  set Initial displacement = 0.001*x + )" +
+           std::to_string(overhang) + "; " + offset +
+           R"( + 0.02*((x-0.5)^2 + (z-0.5)^2) + 0.004*x*z; 0.002*z
   set Initial velocity = 0; )" +
            (dynamic ? "-1" : "0") + R"(; 0
 end
@@ -130,13 +132,19 @@ end
         const bool         friction  = false,
         const double       smoothing = -1,
         const bool         refined   = false,
-        const unsigned int degree    = 1)
+        const unsigned int degree    = 1,
+        const double       overhang  = 0)
   {
     ParameterHandler prm;
-    read_test_parameters(
-      "jacobian_3d.prm",
-      parameters(scheme, jacobian, friction, smoothing, refined, degree),
-      prm);
+    read_test_parameters("jacobian_3d.prm",
+                         parameters(scheme,
+                                    jacobian,
+                                    friction,
+                                    smoothing,
+                                    refined,
+                                    degree,
+                                    overhang),
+                         prm);
     std::ostringstream            screen;
     ContactDynamics::Simulator<3> simulator(prm, screen);
     simulator.initialize();
@@ -261,12 +269,14 @@ end
       without(i) = 0;
     simulator.residual_and_jacobian(without, 0.01, r0);
     r -= r0;
-    Tensor<1, 3>       force, moment, one_side;
-    std::vector<bool>  seen(trial.size(), false);
-    const auto        &dof_handler = simulator.get_dof_handler();
-    const auto        &fe          = dof_handler.get_fe();
-    const auto        &base        = fe.base_element(0);
-    const MappingQ1<3> mapping;
+    Tensor<1, 3>      force, moment, one_side;
+    std::vector<bool> seen(trial.size(), false);
+    const auto       &dof_handler = simulator.get_dof_handler();
+    const auto       &fe          = dof_handler.get_fe();
+    const auto       &base        = fe.base_element(0);
+    // (the scene's cells are straight-sided: their support points are
+    // those of the trilinear mapping for either degree)
+    const MappingQ1<3>                   mapping;
     std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -398,9 +408,6 @@ main()
         -1,
         true,
         2);
-  // node-to-segment of degree 2: closest points on the curved faces, on
-  // their surface or their curved edges, the normal smoothed near the
-  // edges into the nodal normals interpolated with the 9 shape functions
   check("degree 2, friction, quasi-static",
         "quasi-static",
         "exact",
@@ -417,6 +424,29 @@ main()
         -1,
         false,
         2);
+  check("degree 2, refined, friction, quasi-static",
+        "quasi-static",
+        "exact",
+        false,
+        true,
+        -1,
+        true,
+        2);
+  // the upper block 0.15 beyond the lower one along x: faces over the
+  // edge are partly covered, nodes below 10 % of their weight leave the
+  // face's multipliers (S_jk no longer diagonal)
+  check("degree 2, overhanging, friction, quasi-static",
+        "quasi-static",
+        "exact",
+        false,
+        true,
+        -1,
+        false,
+        2,
+        0.15);
+  // node-to-segment of degree 2: closest points on the curved faces, on
+  // their surface or their curved edges, the normal smoothed near the
+  // edges into the nodal normals interpolated with the 9 shape functions
   check("nts degree 2, quasi-static, exact",
         "quasi-static",
         "exact",

@@ -59,14 +59,21 @@ namespace
     return momentum / volume;
   }
 
-  // the Contact subsection for "mortar" or "nts" with c_n and c_t
+  // the scene, the degree and the Contact subsection for "mortar" or "nts"
+  // with c_n and c_t
   std::string
   contact_section(const std::string &formulation,
                   const unsigned int degree,
                   const std::string &c_n,
                   const std::string &c_t)
   {
+    // (degree 2 on half the cells: about the nodes of degree 1)
     return R"(
+subsection Scene
+  set Scene = patch test
+  set Refinement factor = )" +
+           std::string(degree == 2 ? "0.5" : "1") + R"(
+end
 subsection Finite element
   set Polynomial degree = )" +
            std::to_string(degree) + R"(
@@ -102,11 +109,6 @@ end
     read_test_parameters("friction_3d.prm",
                          R"(
 set Dimension = 3
-subsection Scene
-  set Scene = patch test
-  set Refinement factor = )" +
-                           std::string(degree == 2 ? "0.5" : "1") + R"(
-end
 subsection Body upper
   set Young's modulus = 1e6
   set Poisson's ratio = 0
@@ -243,11 +245,6 @@ end
     read_test_parameters("braking_3d.prm",
                          R"(
 set Dimension = 3
-subsection Scene
-  set Scene = patch test
-  set Refinement factor = )" +
-                           std::string(degree == 2 ? "0.5" : "1") + R"(
-end
 subsection Body upper
   set Young's modulus = 1e4
   set Poisson's ratio = 0.3

@@ -116,6 +116,10 @@ namespace ContactDynamics
         return m[18 + a * 9 - a * (a - 1) / 2 + (b - a)];
       };
 
+      bool identity = true;
+      for (unsigned int j = 0; j < 9; ++j)
+        for (unsigned int k = 0; k < 9; ++k)
+          identity = identity && T[j][k] == (j == k ? 1. : 0.);
       std::vector<std::array<std::vector<double>, 9>> dA(9);
       for (unsigned int j = 0; j < 9; ++j)
         {
@@ -123,11 +127,14 @@ namespace ContactDynamics
             continue; // (a dropped node: psi_j = 0)
           for (unsigned int l = 0; l < 9; ++l)
             dA[j][l] = chained(A[j][l], fm, n_x);
-          // the secondary nodes: S_jk = sum_l A_jl int N_l N_k
+          // the secondary nodes: S_jk = sum_l A_jl int N_l N_k (D_j
+          // delta_jk where every node keeps its function: biorthogonality)
           for (unsigned int k = 0; k < 9; ++k)
             {
-              DualAD S = 0.;
-              for (unsigned int l = 0; l < 9; ++l)
+              if (identity && k != j)
+                continue;
+              DualAD S = identity ? m[9 + j] : DualAD(0.);
+              for (unsigned int l = 0; l < 9 && !identity; ++l)
                 S += A[j][l] * mass(l, k);
               std::vector<double> d = chained(S, fm, n_x);
               for (double &x : d)

@@ -105,7 +105,8 @@ namespace ContactDynamics
     // tangential traction z_t = sum_j psi_j lambda_t,j on both sides
     // (lambda_t,j = sum_a lambda_a,j t_a,j along node j's tangents),
     // sum_j S_jk lambda_t,j on the secondary nodes (S_jk = int psi_j N_k =
-    // D_j delta_jk by biorthogonality where the face is covered) and
+    // D_j delta_jk by biorthogonality where no node left the face's
+    // multipliers) and
     // -sum_j M_jk lambda_t,j on the primary ones, and the slip rates
     // t_a,j . (sum_k S_jk v_k - sum_k M_jk v_k) of the face's nodes (=
     // int psi_j v_rel . t_a,j).

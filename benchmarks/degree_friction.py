@@ -1,0 +1,150 @@
+#!/usr/bin/env python3
+"""Coulomb friction between two meshed bodies in 3-D with elements of
+degree 1 and 2: what the degree costs and buys on an oblique sliding pull.
+
+prm/examples/friction_pull_3d.prm (the distorted, non-matching patch-test
+blocks, mu = 0.3, pressed by 1e-3, then the top pulled along d = (cos 30°,
+0, sin 30°) to t = 3, 60 quasi-static steps), dual mortar and
+node-to-segment, degree 1 on Refinement factor 1 and degree 2 on 0.5 (about
+the same nodes), and degree 2 mortar on factor 1 (degree 1's mesh; one
+run: minutes). Measured from the run's own statistics: the interface's
+friction force against mu N in gross sliding (t >= 2.5, worst step), its
+angle from d, the frictional dissipation over [2.5, 3] against
+mu int N du_top, the first slip at T / (mu N); Newton iterations in all;
+the whole run's wall time (process start to exit, one process), medians
+over the repeats.
+
+  /usr/bin/python3 benchmarks/degree_friction.py [--repeats 3]
+
+Writes benchmarks/results/degree_friction.csv and
+doc/degree-friction-table.md.
+"""
+import argparse
+import csv
+import math
+import os
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import bench_common  # noqa: E402
+
+REPO = Path(__file__).resolve().parent.parent
+PULL = REPO / "prm" / "examples" / "friction_pull_3d.prm"
+MU, RATE, ANGLE = 0.3, 1e-3, math.pi / 6
+
+
+def run(exe, work, formulation, degree, factor):
+    name = f"{formulation}_p{degree}_f{factor}"
+    prm, out = work / f"{name}.prm", work / name
+    bench_common.write_prm(prm, PULL, {
+        "Finite element/Polynomial degree": str(degree),
+        "Scene/Refinement factor": str(factor),
+        "Contact/Formulation": formulation,
+        "Output/Output directory": str(out),
+        "Output/VTU interval": "0"})
+    t0 = time.time()
+    p = subprocess.run([str(exe), str(prm)], capture_output=True, text=True,
+                       cwd=work)
+    wall = time.time() - t0
+    if p.returncode != 0:
+        raise RuntimeError(f"{name}:\n{p.stdout[-2000:]}{p.stderr[-2000:]}")
+    info = bench_common.parse_run_log(p.stdout, ["Newton solve"])
+    names, rows = bench_common.read_csv_rows(out / "statistics.csv")
+    names = [n.split("(")[0].strip() for n in names]
+    stats = [dict(zip(names, r)) for r in rows]
+    worst_ratio = worst_angle = 0.
+    onset = None
+    start = None
+    expected = 0.
+    previous_n = None
+    for s in stats:
+        t = float(s["time"])
+        fx, fy, fz = (float(s[f"contact_force_{c}"]) for c in "xyz")
+        tangential, normal = math.hypot(fx, fz), abs(fy)
+        if onset is None and float(s["slip_nodes"]) > 0:
+            onset = tangential / (MU * normal)
+        if t > 2.5 - 1e-9:
+            worst_ratio = max(worst_ratio,
+                              abs(tangential / (MU * normal) - 1))
+            c = (fx * math.cos(ANGLE) + fz * math.sin(ANGLE)) / tangential
+            worst_angle = max(worst_angle,
+                              math.degrees(math.acos(min(1., abs(c)))))
+            if start is None:
+                start = float(s["frictional_dissipation"])
+            else:
+                expected += MU * 0.5 * (normal + previous_n) * RATE * float(
+                    s["dt"])
+        previous_n = normal
+    dissipation = float(stats[-1]["frictional_dissipation"]) - start
+    return dict(formulation=formulation, degree=degree, factor=factor,
+                unknowns=info.get("unknowns", ""), wall_s=wall,
+                newton=int(float(stats[-1]["cumulative_newton_iterations"])),
+                ratio=worst_ratio, angle=worst_angle, onset=onset,
+                dissipation=dissipation / expected - 1)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--exe", type=Path,
+                    default=REPO / "build" / "contact-dynamics")
+    ap.add_argument("--results", type=Path,
+                    default=REPO / "benchmarks" / "results")
+    ap.add_argument("--table", type=Path,
+                    default=REPO / "doc" / "degree-friction-table.md")
+    args = ap.parse_args()
+    work = Path("/tmp/degree_friction")
+    work.mkdir(exist_ok=True)
+    args.results.mkdir(parents=True, exist_ok=True)
+    cases = [(f, 1, 1) for f in ("mortar", "nts")] + \
+        [(f, 2, 0.5) for f in ("mortar", "nts")]
+    rows = []
+    for repeat in range(args.repeats):
+        for case in cases:
+            rows.append(dict(run(args.exe, work, *case), repeat=repeat))
+            print(rows[-1], flush=True)
+    rows.append(dict(run(args.exe, work, "mortar", 2, 1), repeat=0))
+    print(rows[-1], flush=True)
+    with open(args.results / "degree_friction.csv", "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+
+    reference = {}
+    lines = [
+        "<!-- generated by benchmarks/degree_friction.py; do not edit -->",
+        f"Oblique sliding pull (`prm/examples/friction_pull_3d.prm`, mu = "
+        f"0.3, 60 quasi-static steps). Medians of {args.repeats} run(s) "
+        "(degree 2 on factor 1: one), one process, 2 cores, load average "
+        f"at the end {os.getloadavg()[0]:.2f}; {time.strftime('%Y-%m-%d')}. "
+        "Friction force: worst |T / (mu N) - 1| and angle from d over the "
+        "gross sliding (t >= 2.5); dissipation over [2.5, 3] against mu int "
+        "N du_top; first slip at T / (mu N). Wall time relative to degree 1 "
+        "with the same formulation.",
+        "",
+        "| formulation | degree | Refinement factor | unknowns | T / (mu N) "
+        "- 1 | angle (deg) | dissipation | first slip | Newton | whole run "
+        "(s) | vs degree 1 |",
+        "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for formulation, degree, factor in cases + [("mortar", 2, 1)]:
+        mine = [r for r in rows if r["formulation"] == formulation and
+                r["degree"] == degree and r["factor"] == factor]
+        m = mine[0]
+        wall = statistics.median(r["wall_s"] for r in mine)
+        if degree == 1:
+            reference[formulation] = wall
+        lines.append(
+            f"| {formulation} | {degree} | {factor} | {m['unknowns']:,} | "
+            f"{m['ratio']:.2%} | {m['angle']:.3f} | "
+            f"{m['dissipation']:+.2%} | {m['onset']:.3f} | {m['newton']} | "
+            f"{wall:.3g} | {wall / reference[formulation]:.2f} |")
+    args.table.write_text("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()
