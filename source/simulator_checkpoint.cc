@@ -422,6 +422,7 @@ namespace ContactDynamics
         dof_handler.clear();
         distributed->clear();
         scene.create_triangulation(*distributed);
+        discretization.set_geometry(scene.cell_geometry());
         check_collectively(mpi_communicator, [&]() {
           distributed->load(checkpoint + "/" + Checkpoints::mesh_file);
         });

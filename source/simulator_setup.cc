@@ -128,9 +128,9 @@ namespace ContactDynamics
     if (contact)
       {
         if (first)
-          contact->setup(dof_handler);
+          contact->setup(dof_handler, discretization.mapping());
         else
-          contact->remesh(dof_handler);
+          contact->remesh(dof_handler, discretization.mapping());
         locally_relevant.add_indices(contact->surface_dofs());
         // the first process opens contact_history.csv (a restart continues
         // it; a reload at a checkpoint keeps it open)
@@ -281,6 +281,7 @@ namespace ContactDynamics
           parallel::shared::Triangulation<dim>::partition_metis :
           parallel::shared::Triangulation<dim>::partition_zorder);
     scene.create_triangulation(*triangulation);
+    discretization.set_geometry(scene.cell_geometry());
     {
       // refuse a refinement that could not fit in memory before making it
       // (a cell of degree p holds about p^dim times the nodes)

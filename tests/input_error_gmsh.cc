@@ -3,7 +3,10 @@
 // say so, naming the file, instead of listing no surfaces; a contact pair of
 // two surfaces of one body must be refused, naming the pair and the body
 // (the built-in scenes refuse it while reading the parameters, a Gmsh
-// scene once the mesh is there, before the first step).
+// scene once the mesh is there, before the first step). A mesh of second
+// order must name its fault before the first step: serendipity elements
+// (8-node quadrilaterals), cells of first and second order mixed, and a
+// cell folded by its centre node (its Jacobian changes sign inside).
 #include <deal.II/base/exceptions.h>
 
 #include <contact_dynamics/application.h>
@@ -11,6 +14,7 @@
 #include "tests.h"
 
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -74,6 +78,43 @@ $Elements
 $EndElements
 )";
 
+  // the plate in one 9-node quadrilateral with 3-node sides; `cell` is the
+  // element line of the cell (lines: `cells` elements in all)
+  std::string
+  plate_of_second_order(const std::string &cell, const unsigned int cells = 5)
+  {
+    return R"($MeshFormat
+2.2 0 8
+$EndMeshFormat
+$PhysicalNames
+4
+1 2 "bottom"
+1 3 "top"
+1 4 "sides"
+2 1 "plate"
+$EndPhysicalNames
+$Nodes
+9
+1 0 0 0
+2 1 0 0
+3 1 1 0
+4 0 1 0
+5 0.5 0 0
+6 1 0.5 0
+7 0.5 1 0
+8 0 0.5 0
+9 0.5 0.5 0
+$EndNodes
+$Elements
+)" + std::to_string(cells) +
+           R"(
+1 8 2 2 1 1 2 5
+2 8 2 4 2 2 3 6
+3 8 2 3 3 3 4 7
+4 8 2 4 4 4 1 8
+)" + cell + "\n$EndElements\n";
+  }
+
   // Runs (or validates) the parameter file `text` and writes its error.
   void
   expect_error(const std::string &label,
@@ -135,4 +176,33 @@ main()
                "  set VTU interval = 0\n"
                "end\n",
                false);
+
+  // second order: what the file's nodes cannot give
+  const std::map<std::string, std::string> second_order = {
+    {"serendipity", plate_of_second_order("5 16 2 1 1 1 2 3 4 5 6 7 8")},
+    {"mixed orders",
+     plate_of_second_order("5 10 2 1 1 1 2 3 4 5 6 7 8 9\n6 3 2 1 1 1 2 3 4",
+                           6)},
+    {"folded", plate_of_second_order("5 10 2 1 1 1 2 3 4 5 6 7 8 9")}};
+  for (const auto &[label, mesh] : second_order)
+    {
+      std::string text = mesh;
+      if (label == "folded") // the centre node beyond the right side
+        text.replace(text.find("9 0.5 0.5 0"), 11, "9 3 0.5 0");
+      std::ofstream(label + ".msh") << text;
+      expect_error(label,
+                   "subsection Scene\n"
+                   "  set Scene = gmsh\n"
+                   "  set Mesh file = " +
+                     label +
+                     ".msh\n"
+                     "end\n"
+                     "subsection Finite element\n"
+                     "  set Polynomial degree = 2\n"
+                     "end\n"
+                     "subsection Output\n"
+                     "  set Output directory = output_plate\n"
+                     "end\n",
+                   false);
+    }
 }

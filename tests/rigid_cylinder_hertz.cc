@@ -29,10 +29,7 @@
 // solution of degree 2 (measured 0.0027 against 0.0077, 0.36). Degree 2
 // adapted to the contact (2-D: no hanging nodes on the contact surface)
 // against the same bounds and the uniform 80 x 80 load.
-#include <contact_dynamics/contact/surface_contact.h>
-#include <contact_dynamics/simulator.h>
-
-#include "tests.h"
+#include "rigid_hertz_2d.h"
 
 #include <array>
 #include <cmath>
@@ -41,10 +38,7 @@ using namespace dealii;
 
 namespace
 {
-  struct Result
-  {
-    double load, half_width, peak, equilibrium; // relative to Hertz, load
-  };
+  using Result = HertzResult;
 
   Result
   run(const std::string &formulation,
@@ -116,40 +110,7 @@ end
       if (!simulator.advance(0.5))
         check_true(name + "step converged", false);
 
-    const auto *contact =
-      dynamic_cast<const ContactDynamics::SurfaceContact<2> *>(
-        simulator.get_contact());
-    const auto nodes   = contact->secondary_nodes(0);
-    const auto surface = contact->secondary_surface(0);
-    // integral N_j on the current surface: half of each adjacent face
-    // (degree 2: the quadratic N_j on the curved faces)
-    std::vector<double> weight(nodes.states.size(), 0.);
-    if (degree == 1)
-      for (const auto &face : surface.faces)
-        {
-          const double half =
-            nodes.position[face[0]].distance(nodes.position[face[1]]) / 2;
-          weight[face[0]] += half;
-          weight[face[1]] += half;
-        }
-    else
-      for (unsigned int j = 0; j < weight.size(); ++j)
-        weight[j] = surface.current_weight(j, simulator.displacement());
-    double force = 0, moment = 0, peak = 0;
-    for (unsigned int j = 0; j < nodes.states.size(); ++j)
-      {
-        const double p = nodes.states[j].pressure;
-        const double x = nodes.position[j][0];
-        force += p * weight[j];
-        moment += p * x * x * weight[j];
-        peak = std::max(peak, p);
-      }
-    const double P = contact_statistics(*contact).at("roller_force_y");
-    const double R = 1, E_star = 1000 / (1 - 0.3 * 0.3);
-    const double a    = std::sqrt(4 * P * R / (numbers::PI * E_star));
-    const double p0   = 2 * P / (numbers::PI * a);
-    const double a_fe = std::sqrt(4 * moment / force);
-    return {P, a_fe / a - 1, peak / p0 - 1, force / P - 1};
+    return rigid_hertz_2d(simulator, "roller", degree);
   }
 
   void

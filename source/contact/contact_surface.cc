@@ -63,6 +63,7 @@ namespace ContactDynamics
     template <int dim>
     Message
     owned_face_records(const DoFHandler<dim>                 &dof_handler,
+                       const Mapping<dim>                    *cell_mapping,
                        const std::vector<types::boundary_id> &ids,
                        const unsigned int                     n_node_components)
     {
@@ -72,8 +73,12 @@ namespace ContactDynamics
       const auto nodes = quadratic ? quadratic_face_nodes(fe.base_element(0)) :
                                      decltype(quadratic_face_nodes(fe)){};
       // (only degree 2 places nodes inside the cell's vertices)
-      const std::unique_ptr<Mapping<dim>> mapping =
-        quadratic ? std::make_unique<MappingQ<dim>>(2) : nullptr;
+      const std::unique_ptr<Mapping<dim>> own_mapping =
+        quadratic && !cell_mapping ? std::make_unique<MappingQ<dim>>(2) :
+                                     nullptr;
+      const Mapping<dim>                  *mapping = !quadratic ? nullptr :
+                                                     own_mapping ? own_mapping.get() :
+                                                                   cell_mapping;
       Message                              records;
       std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -85,25 +90,30 @@ namespace ContactDynamics
                           cell->face(f)->boundary_id()) != ids.end())
               {
                 cell->get_dof_indices(cell_dofs);
+                // a refined cell of a mesh file's second-order cells has its
+                // vertices where the mapping puts them, not in the mesh
+                const auto vertex   = mapping ?
+                                        mapping->get_vertices(cell) :
+                                        decltype(mapping->get_vertices(cell))();
+                const auto position = [&](const unsigned int i) {
+                  return mapping ? vertex[i] : cell->vertex(i);
+                };
                 std::array<unsigned int, n_v> v;
                 for (unsigned int i = 0; i < n_v; ++i)
                   v[i] = GeometryInfo<dim>::face_to_cell_vertices(f, i);
-                const Tensor<1, dim> t =
-                  cell->vertex(v[1]) - cell->vertex(v[0]);
-                Tensor<1, dim> n;
+                const Tensor<1, dim> t = position(v[1]) - position(v[0]);
+                Tensor<1, dim>       n;
                 if constexpr (dim == 2)
                   {
                     n[0] = t[1];
                     n[1] = -t[0];
                   }
                 else
-                  n = cross_product_3d(t,
-                                       cell->vertex(v[2]) - cell->vertex(v[0]));
+                  n = cross_product_3d(t, position(v[2]) - position(v[0]));
                 // (node index in the base element, position)
                 std::vector<std::pair<unsigned int, Point<dim>>> face_nodes;
                 for (const unsigned int cell_vertex : v)
-                  face_nodes.emplace_back(cell_vertex,
-                                          cell->vertex(cell_vertex));
+                  face_nodes.emplace_back(cell_vertex, position(cell_vertex));
                 if (quadratic)
                   for (unsigned int k = n_v; k < nodes[f].size(); ++k)
                     face_nodes.emplace_back(
@@ -203,7 +213,8 @@ namespace ContactDynamics
   void
   ContactSurface<dim>::build(const DoFHandler<dim>                 &dof_handler,
                              const std::vector<types::boundary_id> &ids,
-                             const unsigned int n_node_components)
+                             const unsigned int  n_node_components,
+                             const Mapping<dim> *mapping)
   {
     reference.clear();
     dofs.clear();
@@ -262,12 +273,13 @@ namespace ContactDynamics
       faces.push_back(vertices);
       face_nodes.push_back(nodes);
     };
-    gather_messages(dof_handler.get_communicator(),
-                    owned_face_records(dof_handler, ids, n_node_components),
-                    [&](Message &part) {
-                      while (!part.at_end())
-                        read_face(part);
-                    });
+    gather_messages(
+      dof_handler.get_communicator(),
+      owned_face_records(dof_handler, mapping, ids, n_node_components),
+      [&](Message &part) {
+        while (!part.at_end())
+          read_face(part);
+      });
 
     reference_weight.assign(reference.size(), 0.);
     if (degree == 1)

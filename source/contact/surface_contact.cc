@@ -92,10 +92,12 @@ namespace ContactDynamics
 
   template <int dim>
   void
-  SurfaceContact<dim>::setup(const DoFHandler<dim> &dof_handler)
+  SurfaceContact<dim>::setup(const DoFHandler<dim>   &dof_handler,
+                             const Mapping<dim, dim> &mapping)
   {
-    comm       = dof_handler.get_communicator();
-    owned_dofs = dof_handler.locally_owned_dofs();
+    cell_mapping = &mapping;
+    comm         = dof_handler.get_communicator();
+    owned_dofs   = dof_handler.locally_owned_dofs();
     pairs.clear();
     pairs.resize(contact.pairs.size());
     std::set<types::global_dof_index> secondary_normal;
@@ -168,11 +170,17 @@ namespace ContactDynamics
   {
     auto &pair = pairs[p];
     pair.index = p;
-    pair.secondary.build(dof_handler, contact.pairs[p].secondary, 2 * dim);
+    pair.secondary.build(dof_handler,
+                         contact.pairs[p].secondary,
+                         2 * dim,
+                         cell_mapping);
     if (contact.pairs[p].obstacle >= 0)
       obstacles.set_up(pair, contact.obstacles[contact.pairs[p].obstacle]);
     else
-      pair.primary.build(dof_handler, contact.pairs[p].primary, dim);
+      pair.primary.build(dof_handler,
+                         contact.pairs[p].primary,
+                         dim,
+                         cell_mapping);
     AssertThrow(pair.secondary.n_faces() > 0 &&
                   (pair.obstacle || pair.primary.n_faces() > 0),
                 ExcMessage("The contact pair '" + contact.pairs[p].name +
@@ -583,10 +591,11 @@ namespace ContactDynamics
 
   template <int dim>
   void
-  SurfaceContact<dim>::remesh(const DoFHandler<dim> &dof_handler)
+  SurfaceContact<dim>::remesh(const DoFHandler<dim>   &dof_handler,
+                              const Mapping<dim, dim> &mapping)
   {
     // (the work and dissipation done so far carry over)
-    setup(dof_handler);
+    setup(dof_handler, mapping);
     history.transfer({});
   }
 

@@ -1,7 +1,7 @@
 #include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/mapping_q.h>
 
 #include <contact_dynamics/mechanics/discretization.h>
+#include <contact_dynamics/mechanics/geometry_mapping.h>
 
 namespace ContactDynamics
 {
@@ -17,8 +17,10 @@ namespace ContactDynamics
       "the displacement (2: 9-node quadrilaterals, 27-node hexahedra) with "
       "a mapping of the same degree, so that with 2 the cells at the curved "
       "surfaces of the built-in scenes (the Hertz cylinder and sphere, the "
-      "ironing tools) are curved as well (Gmsh meshes carry no curved "
-      "description and stay straight). On the same mesh degree 2 has about 2^dim "
+      "ironing tools) are curved as well, and so are the cells of a Gmsh "
+      "mesh of second order (9-node quadrilaterals, 27-node hexahedra: "
+      "their mid-side and centre nodes give the geometry; with 1 those "
+      "nodes are ignored and the cells are straight). On the same mesh degree 2 has about 2^dim "
       "times the unknowns of degree 1 (4 in 2-D, 8 in 3-D) and 1.8 (2-D) or "
       "2.4 (3-D) times the matrix entries per row (doc/accuracy-vs-cost.md "
       "says what each degree costs and buys). One degree for all bodies. "
@@ -42,10 +44,23 @@ namespace ContactDynamics
   Discretization<dim>::create(const unsigned int n_extra)
   {
     const FE_Q<dim> q(polynomial_degree);
-    element      = n_extra > 0 ?
-                     std::make_unique<FESystem<dim>>(q, dim, q, n_extra) :
-                     std::make_unique<FESystem<dim>>(q, dim);
-    cell_mapping = std::make_unique<MappingQ<dim>>(polynomial_degree);
+    element = n_extra > 0 ?
+                std::make_unique<FESystem<dim>>(q, dim, q, n_extra) :
+                std::make_unique<FESystem<dim>>(q, dim);
+    if (polynomial_degree == 1)
+      cell_mapping = std::make_unique<MappingQ<dim>>(1);
+    else
+      cell_mapping = std::make_unique<GeometryMapping<dim>>();
+  }
+
+  template <int dim>
+  void
+  Discretization<dim>::set_geometry(
+    std::shared_ptr<const QuadraticGeometry<dim>> geometry)
+  {
+    Assert(cell_mapping, ExcMessage("create() was not called"));
+    if (auto *curved = dynamic_cast<GeometryMapping<dim> *>(cell_mapping.get()))
+      curved->set_geometry(std::move(geometry));
   }
 
   template class Discretization<2>;

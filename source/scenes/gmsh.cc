@@ -20,7 +20,12 @@ namespace ContactDynamics
           "Gmsh .msh file (format 2.2 or 4, ASCII) for the scene 'gmsh'. "
           "Physical groups of the cells are the bodies (numbered in the order "
           "of their tags), physical groups of the boundary faces are the "
-          "surfaces; all of them need a name in $PhysicalNames.");
+          "surfaces; all of them need a name in $PhysicalNames. Cells of "
+          "first order (4-node quadrilaterals, 8-node hexahedra) or, in "
+          "formats 2.2 and 4.1, of second order (9-node quadrilaterals, "
+          "27-node hexahedra: Mesh.ElementOrder = 2 with "
+          "Mesh.SecondOrderIncomplete = 0), whose mid-side and centre nodes "
+          "curve the cells with Finite element/Polynomial degree = 2.");
       }
 
       void
@@ -40,12 +45,20 @@ namespace ContactDynamics
       void
       create_triangulation(Triangulation<dim> &triangulation) const override
       {
-        GmshReader::read_mesh(mesh_file, file_layout, triangulation);
+        geometry = GmshReader::read_mesh(mesh_file, file_layout, triangulation);
+      }
+
+      std::shared_ptr<const QuadraticGeometry<dim>>
+      cell_geometry() const override
+      {
+        return geometry;
       }
 
     private:
       std::string mesh_file;
       SceneLayout file_layout;
+      // of the last mesh read (null for a mesh of first order)
+      mutable std::shared_ptr<const QuadraticGeometry<dim>> geometry;
     };
   } // namespace
 

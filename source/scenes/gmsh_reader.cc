@@ -5,6 +5,7 @@
 #include <deal.II/grid/tria_description.h>
 
 #include <contact_dynamics/scenes/gmsh_reader.h>
+#include <contact_dynamics/scenes/gmsh_second_order.h>
 
 #include <algorithm>
 #include <fstream>
@@ -23,12 +24,6 @@ namespace ContactDynamics
         std::map<int, std::string> bodies;
         std::map<int, std::string> surfaces;
       };
-
-      std::string
-      mesh_file_error_prefix(const std::string &file)
-      {
-        return "The mesh file '" + file + "' (parameter Scene/Mesh file) ";
-      }
 
       PhysicalNames
       read_physical_names(const std::string &file, const int dim)
@@ -60,7 +55,7 @@ namespace ContactDynamics
                   const auto first = line.find('"'), last = line.rfind('"');
                   AssertThrow(
                     words && first != std::string::npos && last > first,
-                    ExcMessage(mesh_file_error_prefix(file) +
+                    ExcMessage(file_error(file) +
                                "has a malformed line in $PhysicalNames: '" +
                                line + "'."));
                   const std::string name =
@@ -77,7 +72,7 @@ namespace ContactDynamics
         // a mesh of the other dimension would otherwise show as a scene
         // without surfaces (or bodies)
         AssertThrow(highest <= dim,
-                    ExcMessage(mesh_file_error_prefix(file) + "is a " +
+                    ExcMessage(file_error(file) + "is a " +
                                std::to_string(highest) +
                                "-D mesh (it has physical groups of dimension " +
                                std::to_string(highest) +
@@ -89,8 +84,8 @@ namespace ContactDynamics
         AssertThrow(
           !names.bodies.empty(),
           ExcMessage(
-            mesh_file_error_prefix(file) +
-            "has no physical names of dimension " + std::to_string(dim) +
+            file_error(file) + "has no physical names of dimension " +
+            std::to_string(dim) +
             (highest == dim - 1 && dim == 3 ?
                " (the highest is 2: if it is a 2-D mesh, set Dimension = 2)" :
                "") +
@@ -108,36 +103,40 @@ namespace ContactDynamics
             AssertThrow(std::find(layout.body_names.begin(),
                                   layout.body_names.end(),
                                   name) == layout.body_names.end(),
-                        ExcMessage(mesh_file_error_prefix(file) +
-                                   "names two bodies '" + name +
-                                   "'; body names must be unique."));
+                        ExcMessage(file_error(file) + "names two bodies '" +
+                                   name + "'; body names must be unique."));
             layout.body_names.push_back(name);
           }
         types::boundary_id id = 0;
         for (const auto &[tag, name] : names.surfaces)
           {
             AssertThrow(layout.surfaces.count(name) == 0,
-                        ExcMessage(mesh_file_error_prefix(file) +
-                                   "names two surfaces '" + name +
-                                   "'; surface names must be unique."));
+                        ExcMessage(file_error(file) + "names two surfaces '" +
+                                   name + "'; surface names must be unique."));
             layout.surfaces[name] = id++;
           }
         return layout;
       }
 
-      // Reads the file into a scratch triangulation: material ids are the
-      // physical tags of the cells, boundary ids those of the faces (0 if
-      // none).
+      // Reads the file (or its corner elements, if of second order) into a
+      // scratch triangulation: material ids are the physical tags of the
+      // cells, boundary ids those of the faces (0 if none).
       template <int dim>
       void
-      read_tagged_mesh(const std::string &file, Triangulation<dim> &file_mesh)
+      read_tagged_mesh(const std::string          &file,
+                       const SecondOrderFile<dim> &second_order,
+                       Triangulation<dim>         &file_mesh)
       {
         GridIn<dim> grid_in;
         grid_in.attach_triangulation(file_mesh);
-        std::ifstream in(file);
+        std::ifstream      in(file);
+        std::istringstream corners(second_order.corner_text);
         try
           {
-            grid_in.read_msh(in);
+            if (second_order.second_order)
+              grid_in.read_msh(corners);
+            else
+              grid_in.read_msh(in);
           }
         catch (const ExceptionBase &e)
           {
@@ -150,13 +149,14 @@ namespace ContactDynamics
             AssertThrow(
               false,
               ExcMessage(
-                mesh_file_error_prefix(file) +
+                file_error(file) +
                 "could not be read by GridIn::read_msh():\n" + reason.str() +
                 (interior ? "(A tagged line or face between two bodies "
                             "that share nodes: mesh touching bodies with "
                             "their own nodes and faces.)" :
                             "(GridIn reads Gmsh 2.2 or 4 ASCII files of "
-                            "linear quadrilaterals or hexahedra: another "
+                            "quadrilaterals or hexahedra, of second order "
+                            "(9 or 27 nodes) in 2.2 and 4.1: another "
                             "element type, a number that does not parse, a "
                             "section shorter than its count or a cut file "
                             "stops it.)")));
@@ -196,8 +196,7 @@ namespace ContactDynamics
             const auto body = body_of_tag.find(cell->material_id());
             AssertThrow(
               body != body_of_tag.end(),
-              ExcMessage(mesh_file_error_prefix(file) +
-                         "has cells with the physical tag " +
+              ExcMessage(file_error(file) + "has cells with the physical tag " +
                          std::to_string(cell->material_id()) +
                          " that has no name in $PhysicalNames; every cell must "
                          "belong to a named body."));
@@ -234,7 +233,7 @@ namespace ContactDynamics
 
 
     template <int dim>
-    void
+    std::shared_ptr<const QuadraticGeometry<dim>>
     read_mesh(const std::string  &file,
               const SceneLayout  &layout,
               Triangulation<dim> &triangulation)
@@ -245,7 +244,8 @@ namespace ContactDynamics
           "Scene::create_triangulation() needs an empty triangulation."));
       const PhysicalNames names = read_physical_names(file, dim);
       Triangulation<dim>  file_mesh;
-      read_tagged_mesh(file, file_mesh);
+      const auto          second_order = read_second_order<dim>(file);
+      read_tagged_mesh(file, second_order, file_mesh);
 
       std::map<int, types::material_id> body_of_tag;
       for (const auto &[tag, name] : names.bodies)
@@ -277,22 +277,22 @@ namespace ContactDynamics
               AssertThrow(
                 surface != surface_of_tag.end(),
                 ExcMessage(
-                  mesh_file_error_prefix(file) + "has a boundary face at (" +
-                  where.str() + ") of the body '" +
-                  layout.body_names[cell->material_id()] +
+                  file_error(file) + "has a boundary face at (" + where.str() +
+                  ") of the body '" + layout.body_names[cell->material_id()] +
                   "' that is in no named physical group of dimension " +
                   std::to_string(dim - 1) +
                   ". Every boundary face must belong to a named surface "
                   "(bodies that touch need their own faces there)."));
               face->set_boundary_id(surface->second);
             }
+      return cell_geometry(second_order, triangulation, file);
     }
 
 
 
-    template void
+    template std::shared_ptr<const QuadraticGeometry<2>>
     read_mesh(const std::string &, const SceneLayout &, Triangulation<2> &);
-    template void
+    template std::shared_ptr<const QuadraticGeometry<3>>
     read_mesh(const std::string &, const SceneLayout &, Triangulation<3> &);
   } // namespace GmshReader
 } // namespace ContactDynamics

@@ -212,6 +212,16 @@ namespace ContactDynamics
 
 
 
+  template <int dim>
+  std::shared_ptr<const QuadraticGeometry<dim>>
+  Scene<dim>::cell_geometry() const
+  {
+    Assert(scene, ExcMessage("Scene::parse_parameters() was not called."));
+    return scene->cell_geometry();
+  }
+
+
+
   template class Scene<2>;
   template class Scene<3>;
 } // namespace ContactDynamics

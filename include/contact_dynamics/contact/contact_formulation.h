@@ -22,6 +22,12 @@
 #include <string>
 #include <vector>
 
+namespace dealii
+{
+  template <int dim, int spacedim>
+  class Mapping;
+}
+
 namespace ContactDynamics
 {
   using namespace dealii;
@@ -41,9 +47,13 @@ namespace ContactDynamics
     virtual std::vector<std::string>
     extra_component_names() const = 0;
 
-    /** After distribute_dofs: surfaces and degree-of-freedom maps. */
+    /**
+     * After distribute_dofs: surfaces (placed by the cells' `mapping`) and
+     * degree-of-freedom maps.
+     */
     virtual void
-    setup(const DoFHandler<dim> &dof_handler) = 0;
+    setup(const DoFHandler<dim>   &dof_handler,
+          const Mapping<dim, dim> &mapping) = 0;
 
     /**
      * After the mesh changed (adaptive refinement) and distribute_dofs:
@@ -52,9 +62,10 @@ namespace ContactDynamics
      * assembles and commits (with old_u = u: no work).
      */
     virtual void
-    remesh(const DoFHandler<dim> &dof_handler)
+    remesh(const DoFHandler<dim> &dof_handler, const Mapping<dim, dim> &mapping)
     {
       (void)dof_handler;
+      (void)mapping;
       AssertThrow(false,
                   ExcMessage("This contact formulation cannot follow a "
                              "changing mesh."));

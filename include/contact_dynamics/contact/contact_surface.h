@@ -16,6 +16,12 @@
 #include <array>
 #include <vector>
 
+namespace dealii
+{
+  template <int dim, int spacedim>
+  class Mapping;
+}
+
 namespace ContactDynamics
 {
   using namespace dealii;
@@ -37,12 +43,14 @@ namespace ContactDynamics
      * `n_node_components` degrees of freedom are recorded per node: the
      * displacement first, then any multiplier components. With elements of
      * degree 2 every node of a face is a surface node (the mid-side nodes,
-     * in 3-D the centres too), placed by the mapping of degree 2.
+     * in 3-D the centres too), placed by `mapping` (of degree 2; null: a
+     * MappingQ(2) on the scene's manifolds).
      */
     void
     build(const DoFHandler<dim>                 &dof_handler,
           const std::vector<types::boundary_id> &boundary_ids,
-          const unsigned int                     n_node_components);
+          const unsigned int                     n_node_components,
+          const Mapping<dim, dim>               *mapping = nullptr);
 
     unsigned int
     n_nodes() const

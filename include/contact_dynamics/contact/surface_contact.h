@@ -50,10 +50,12 @@ namespace ContactDynamics
     extra_component_names() const override;
 
     void
-    setup(const DoFHandler<dim> &dof_handler) override;
+    setup(const DoFHandler<dim>   &dof_handler,
+          const Mapping<dim, dim> &mapping) override;
 
     void
-    remesh(const DoFHandler<dim> &dof_handler) override;
+    remesh(const DoFHandler<dim>   &dof_handler,
+           const Mapping<dim, dim> &mapping) override;
 
     std::vector<Point<dim>>
     contact_zone(const VectorType &u, const double lookahead) const override;
@@ -98,10 +100,7 @@ namespace ContactDynamics
     const std::vector<types::global_dof_index> &
     multiplier_dofs() const override;
 
-    /**
-     * The lifecycle of the history: calls of the owners in `history`
-     * (surface_contact.cc).
-     */
+    /** The history's lifecycle: calls of the owners in `history`. */
     void
     start_step() override;
 
@@ -231,7 +230,8 @@ namespace ContactDynamics
      */
     ContactHistoryRegistry history;
 
-    MPI_Comm comm = MPI_COMM_WORLD;
+    MPI_Comm                 comm         = MPI_COMM_WORLD;
+    const Mapping<dim, dim> *cell_mapping = nullptr; // of the last setup()
 
     /**
      * Checkpoints: per pair, the node of this mesh at each saved node (by

@@ -14,11 +14,15 @@ namespace ContactDynamics
 {
   using namespace dealii;
 
+  template <int dim>
+  class QuadraticGeometry;
+
   /**
    * FE_Q(p) for every displacement component and for the contact
-   * multipliers, with a MappingQ(p) of the same degree: with p = 2 the
-   * cells at curved surfaces of the scenes (their manifolds) are curved in
-   * the geometry too, not only in the unknowns. One degree for the run.
+   * multipliers, with a mapping of the same degree: with p = 2 the cells at
+   * curved surfaces of the scenes (their manifolds, or the nodes of a mesh
+   * file's second-order cells) are curved in the geometry too, not only in
+   * the unknowns. One degree for the run.
    */
   template <int dim>
   class Discretization
@@ -33,6 +37,15 @@ namespace ContactDynamics
     /** The element: dim displacement components, then `n_extra` more. */
     void
     create(const unsigned int n_extra);
+
+    /**
+     * With degree 2, the cells' curved geometry from the mesh file's nodes
+     * (null: from the scene's manifolds); degree 1 keeps straight cells
+     * between the vertices. Call after create() and after every
+     * (re)creation of the coarse mesh.
+     */
+    void
+    set_geometry(std::shared_ptr<const QuadraticGeometry<dim>> geometry);
 
     unsigned int
     degree() const

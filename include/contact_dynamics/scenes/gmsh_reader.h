@@ -8,10 +8,14 @@
 
 #include <contact_dynamics/scenes/scene.h>
 
+#include <memory>
 #include <string>
 
 namespace ContactDynamics
 {
+  template <int dim>
+  class QuadraticGeometry;
+
   namespace GmshReader
   {
     /**
@@ -25,10 +29,12 @@ namespace ContactDynamics
     /**
      * Reads the mesh into an empty triangulation: material ids from the
      * layout's bodies, boundary ids from its surfaces; bodies meshed with
-     * common nodes get separate vertices.
+     * common nodes get separate vertices. Returns the cells' curved geometry
+     * if the file's cells are of second order (9-node quadrilaterals,
+     * 27-node hexahedra), else null.
      */
     template <int dim>
-    void
+    std::shared_ptr<const QuadraticGeometry<dim>>
     read_mesh(const std::string  &file,
               const SceneLayout  &layout,
               Triangulation<dim> &triangulation);

@@ -19,6 +19,9 @@ namespace ContactDynamics
 {
   using namespace dealii;
 
+  template <int dim>
+  class QuadraticGeometry;
+
   /**
    * What every scene provides. The bodies of a scene never share vertices,
    * even where they touch, so that they can separate.
@@ -40,6 +43,17 @@ namespace ContactDynamics
     /** Builds the mesh into an empty triangulation. */
     virtual void
     create_triangulation(Triangulation<dim> &triangulation) const = 0;
+
+    /**
+     * The curved geometry of the coarse cells of the last triangulation
+     * created, where the scene's mesh gives it by nodes (a Gmsh file of
+     * second order); null where the manifolds give it.
+     */
+    virtual std::shared_ptr<const QuadraticGeometry<dim>>
+    cell_geometry() const
+    {
+      return nullptr;
+    }
   };
 
   /** The scene a parameter file selects (subsection Scene). */
@@ -69,6 +83,10 @@ namespace ContactDynamics
     /** Builds the mesh; the triangulation must be empty. */
     void
     create_triangulation(Triangulation<dim> &triangulation) const;
+
+    /** See SceneBase::cell_geometry(). */
+    std::shared_ptr<const QuadraticGeometry<dim>>
+    cell_geometry() const;
 
   private:
     std::string                     scene_name;

@@ -1,0 +1,148 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_q.h>
+
+#include <contact_dynamics/parameters.h>
+#include <contact_dynamics/scenes/quadratic_geometry.h>
+
+#include <array>
+#include <cmath>
+
+namespace ContactDynamics
+{
+  namespace
+  {
+    template <int dim>
+    std::string
+    point_text(const Point<dim> &p)
+    {
+      std::string text = "(";
+      for (unsigned int d = 0; d < dim; ++d)
+        text += (d > 0 ? " " : "") + format_number(p[d]);
+      return text + ")";
+    }
+
+    // det of the coarse map's Jacobian at the reference point xi
+    template <int dim>
+    double
+    map_determinant(const FiniteElement<dim>      &fe,
+                    const std::vector<Point<dim>> &nodes,
+                    const Point<dim>              &xi)
+    {
+      Tensor<2, dim> J;
+      for (unsigned int i = 0; i < nodes.size(); ++i)
+        J += outer_product(static_cast<Tensor<1, dim>>(nodes[i]),
+                           fe.shape_grad(i, xi));
+      return determinant(J);
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  QuadraticGeometry<dim>::QuadraticGeometry(
+    std::vector<std::vector<Point<dim>>> nodes,
+    const std::string                   &source)
+    : coarse_nodes(std::move(nodes))
+    , element(std::make_unique<FE_Q<dim>>(2))
+  {
+    // node i's 1-D factors: at 0, 1/2 or 1 in each direction
+    for (const Point<dim> &p : element->get_unit_support_points())
+      {
+        std::array<unsigned int, dim> factor;
+        for (unsigned int d = 0; d < dim; ++d)
+          factor[d] = static_cast<unsigned int>(std::lround(2 * p[d]));
+        node_factor.push_back(factor);
+      }
+    // a mid-side node pulled past its neighbours folds the cell where the
+    // corners alone would not show it
+    std::vector<Point<dim>> checked = QGauss<dim>(3).get_points();
+    for (const unsigned int v : GeometryInfo<dim>::vertex_indices())
+      checked.push_back(GeometryInfo<dim>::unit_cell_vertex(v));
+    for (const auto &cell_nodes : coarse_nodes)
+      {
+        AssertThrow(cell_nodes.size() == element->n_dofs_per_cell(),
+                    ExcInternalError());
+        for (const Point<dim> &xi : checked)
+          {
+            const double det = map_determinant(*element, cell_nodes, xi);
+            if (det > 0)
+              continue;
+            Point<dim> x;
+            for (unsigned int i = 0; i < cell_nodes.size(); ++i)
+              x += element->shape_value(i, xi) * cell_nodes[i];
+            AssertThrow(false,
+                        ExcMessage(
+                          source + "has a second-order cell (corner " +
+                          point_text(cell_nodes[0]) +
+                          ") folded by its mid-side or centre nodes: its "
+                          "Jacobian determinant is " +
+                          format_number(det) + " <= 0 at " + point_text(x) +
+                          ". Move those nodes back between the corners (or "
+                          "mesh the curved boundary finer)."));
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  QuadraticGeometry<dim>::~QuadraticGeometry() = default;
+
+
+
+  template <int dim>
+  std::vector<Point<dim>>
+  QuadraticGeometry<dim>::support_points(
+    const typename Triangulation<dim>::cell_iterator &cell) const
+  {
+    if (cell->level() == 0)
+      {
+        AssertIndexRange(cell->index(), coarse_nodes.size());
+        Assert(coarse_nodes[cell->index()][0].distance(cell->vertex(0)) <=
+                 1e-12 * (1 + cell->diameter()),
+               ExcMessage("The geometry belongs to another coarse mesh."));
+        return coarse_nodes[cell->index()];
+      }
+    // the cell's support points in the reference cell of its coarse ancestor
+    std::vector<Point<dim>> xi       = element->get_unit_support_points();
+    auto                    ancestor = cell;
+    while (ancestor->level() > 0)
+      {
+        const auto         parent = ancestor->parent();
+        const unsigned int child =
+          ancestor->parent()->child_iterator_to_index(ancestor);
+        for (Point<dim> &p : xi)
+          p = GeometryInfo<dim>::child_to_cell_coordinates(p, child);
+        ancestor = parent;
+      }
+    AssertIndexRange(ancestor->index(), coarse_nodes.size());
+    const auto             &nodes = coarse_nodes[ancestor->index()];
+    std::vector<Point<dim>> points(xi.size());
+    // the tensor-product basis by its 1-D factors (FE_Q::shape_value per
+    // node and point would cost about as much as the cell's assembly)
+    for (unsigned int q = 0; q < xi.size(); ++q)
+      {
+        std::array<std::array<double, 3>, dim> L;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double x = xi[q][d];
+            L[d] = {{(1 - x) * (1 - 2 * x), 4 * x * (1 - x), x * (2 * x - 1)}};
+          }
+        for (unsigned int i = 0; i < nodes.size(); ++i)
+          {
+            double N = 1;
+            for (unsigned int d = 0; d < dim; ++d)
+              N *= L[d][node_factor[i][d]];
+            points[q] += N * nodes[i];
+          }
+      }
+    return points;
+  }
+
+
+
+  template class QuadraticGeometry<2>;
+  template class QuadraticGeometry<3>;
+} // namespace ContactDynamics
