@@ -115,9 +115,11 @@ namespace ContactDynamics
       Patterns::Integer(0, 12),
       "Times every cell of the scene's mesh is split in 2^dim after it is "
       "built, in [0, 12] (each one multiplies the cells by 4 in 2-D). "
-      "Curved surfaces of the built-in scenes stay on their circles (Gmsh "
-      "meshes have no curved description: their refined boundaries are "
-      "polygons). With Mesh = distributed the "
+      "Curved surfaces of the built-in scenes stay on their circles; with "
+      "Polynomial degree = 2 the refined cells of a Gmsh mesh of second "
+      "order stay on its curved cells (a Gmsh mesh of first order, or "
+      "degree 1: the refined boundaries are polygons). With Mesh = "
+      "distributed the "
       "scene's mesh is the coarse mesh every process stores and only the "
       "refined cells are distributed: a coarse Refinement factor and "
       "refinements here keep the replicated part small.");

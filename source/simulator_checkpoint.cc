@@ -5,6 +5,7 @@
 
 #include <contact_dynamics/output/checkpoint.h>
 #include <contact_dynamics/parameters.h>
+#include <contact_dynamics/scenes/quadratic_geometry.h>
 #include <contact_dynamics/simulator.h>
 
 #include <array>
@@ -264,6 +265,9 @@ namespace ContactDynamics
     data.set("output/last vtu step", last_vtu_step);
     data.set("wall time", wall_time_before + wall_timer.wall_time());
     data.set("coarse mesh", coarse_mesh_signature(*triangulation));
+    // (a mesh file of second order: its nodes shape the cells too)
+    if (const auto geometry = scene.cell_geometry())
+      data.set("coarse mesh nodes", std::vector<double>{geometry->node_sum()});
     data.set_text("parameters", parameters_text);
     data.set_text("statistics columns", join(statistics_columns(), ","));
     // where the continued files end (their rows are flushed as written),
@@ -500,8 +504,12 @@ namespace ContactDynamics
                            "', t = " + format_number(data.value("time")) +
                            ": nothing to continue (give a later End "
                            "time)."));
+    const auto geometry = scene.cell_geometry();
     AssertThrow(data.get("coarse mesh", 2) ==
-                  coarse_mesh_signature(*triangulation),
+                    coarse_mesh_signature(*triangulation) &&
+                  data.has("coarse mesh nodes") == (geometry != nullptr) &&
+                  (!geometry ||
+                   data.get("coarse mesh nodes", 1)[0] == geometry->node_sum()),
                 ExcMessage("The checkpoint '" + checkpoint +
                            "' was written on another coarse mesh than "
                            "these parameters build (a changed mesh "

@@ -97,6 +97,11 @@ namespace ContactDynamics
           << dof_handler.n_dofs() << " unknowns, " << bodies.size() << " bod"
           << (bodies.size() == 1 ? "y" : "ies") << "; linear solver "
           << linear_solver_name << std::endl;
+    if (scene.cell_geometry() && discretization.degree() == 1)
+      pcout << "Note: the mesh file's cells are of second order; with "
+               "Finite element/Polynomial degree = 1 their mid-side and "
+               "centre nodes are ignored (straight cells)."
+            << std::endl;
     if (balances_between_steps())
       pcout << "Time integration " << integrator.scheme_name()
             << ": alpha_m = " << integrator.alpha_m()

@@ -5,8 +5,10 @@
 // (the built-in scenes refuse it while reading the parameters, a Gmsh
 // scene once the mesh is there, before the first step). A mesh of second
 // order must name its fault before the first step: serendipity elements
-// (8-node quadrilaterals), cells of first and second order mixed, and a
-// cell folded by its centre node (its Jacobian changes sign inside).
+// (8-node quadrilaterals), cells of first and second order mixed, a cell
+// folded by its centre node (its Jacobian changes sign inside) or by a
+// mid-side node (only on that side), a cell with two coincident corners,
+// triangles of second order, an element line cut short.
 #include <deal.II/base/exceptions.h>
 
 #include <contact_dynamics/application.h>
@@ -183,12 +185,24 @@ main()
     {"mixed orders",
      plate_of_second_order("5 10 2 1 1 1 2 3 4 5 6 7 8 9\n6 3 2 1 1 1 2 3 4",
                            6)},
-    {"folded", plate_of_second_order("5 10 2 1 1 1 2 3 4 5 6 7 8 9")}};
+    {"folded", plate_of_second_order("5 10 2 1 1 1 2 3 4 5 6 7 8 9")},
+    {"folded at a side", plate_of_second_order("5 10 2 1 1 1 2 3 4 5 6 7 8 9")},
+    {"coincident corners",
+     plate_of_second_order("5 10 2 1 1 1 2 3 4 5 6 7 8 9")},
+    {"triangles of second order",
+     plate_of_second_order("5 9 2 1 1 1 2 3 5 6 9")},
+    {"cut element", plate_of_second_order("5 10 2 1 1 1 2 3 4 5")}};
   for (const auto &[label, mesh] : second_order)
     {
       std::string text = mesh;
       if (label == "folded") // the centre node beyond the right side
         text.replace(text.find("9 0.5 0.5 0"), 11, "9 3 0.5 0");
+      // the bottom's mid-side node pulled up by 0.35: det J < 0 only on
+      // that side (the Gauss points inside stay positive)
+      if (label == "coincident corners") // node 4 onto node 3
+        text.replace(text.find("4 0 1 0"), 7, "4 1 1 0");
+      if (label == "folded at a side")
+        text.replace(text.find("5 0.5 0 0"), 9, "5 0.5 0.35 0");
       std::ofstream(label + ".msh") << text;
       expect_error(label,
                    "subsection Scene\n"

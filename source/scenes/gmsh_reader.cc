@@ -133,7 +133,7 @@ namespace ContactDynamics
         std::istringstream corners(second_order.corner_text);
         try
           {
-            if (second_order.second_order)
+            if (second_order.rewritten)
               grid_in.read_msh(corners);
             else
               grid_in.read_msh(in);

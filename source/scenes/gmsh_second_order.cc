@@ -69,7 +69,7 @@ namespace ContactDynamics
         return result;
       }
 
-      // The file as lines, with the section readers' position
+      // The file as lines (without '\r'), read section by section
       struct Lines
       {
         std::vector<std::string> text;
@@ -84,36 +84,57 @@ namespace ContactDynamics
           return text.size();
         }
 
-        const std::string &
-        at(const std::size_t i, const std::string &section) const
+        // The index of the next line of `section` with content from i on
+        // (i moves past it); a section's end or the file's end there means
+        // the section is shorter than its counts.
+        std::size_t
+        next(std::size_t &i, const std::string &section) const
         {
-          AssertThrow(i < text.size(),
-                      ExcMessage(file_error(file) + "ends inside " + section +
-                                 " (a cut file?)."));
-          return text[i];
+          while (i < text.size() && Utilities::trim(text[i]).empty())
+            ++i;
+          AssertThrow(i < text.size() && text[i].find('$') == std::string::npos,
+                      ExcMessage(file_error(file) + "ends its " + section +
+                                 " section before the count its header "
+                                 "gives (a cut file, or a wrong count)."));
+          return i++;
         }
       };
 
       // Rewrites one element (its type and node tags) to its corner
-      // element, recording the nodes of a cell; refuses serendipity
-      // elements.
+      // element, recording the nodes of a cell; refuses the elements of
+      // second order it cannot read. `seen`: whether the file is of second
+      // order at all.
       template <int dim>
       void
       rewrite_element(int                                 &type,
                       std::vector<long long>              &nodes,
                       std::vector<std::vector<long long>> &cells,
-                      unsigned int                        &linear_cells,
+                      unsigned int                        &other_cells,
+                      bool                                &seen,
                       const std::string                   &file)
       {
-        AssertThrow(type != 16 && type != 17,
+        const bool serendipity = type == 16 || type == 17;
+        const bool simplex     = type == 9 || type == 11;
+        seen =
+          seen || serendipity || simplex || second_order_types.count(type) > 0;
+        AssertThrow(!serendipity,
                     ExcMessage(file_error(file) +
                                "has serendipity elements (8-node "
                                "quadrilaterals or 20-node hexahedra): mesh "
                                "with Mesh.SecondOrderIncomplete = 0 (9-node "
                                "quadrilaterals, 27-node hexahedra) or with "
                                "elements of first order."));
-        if (type == (dim == 2 ? 3 : 5))
-          ++linear_cells;
+        AssertThrow(!simplex,
+                    ExcMessage(file_error(file) +
+                               "has triangles or tetrahedra of second order: "
+                               "only quadrilaterals and hexahedra are read "
+                               "(Mesh.RecombineAll = 1, and "
+                               "Mesh.SubdivisionAlgorithm = 1 or 2 for "
+                               "meshes of quadrilaterals or hexahedra "
+                               "only)."));
+        // cells of first order, triangles, tetrahedra, prisms, pyramids
+        if (dim == 2 ? (type == 2 || type == 3) : (type >= 4 && type <= 7))
+          ++other_cells;
         const auto second = second_order_types.find(type);
         if (second == second_order_types.end())
           return;
@@ -122,7 +143,8 @@ namespace ContactDynamics
                                std::to_string(type) + " with " +
                                std::to_string(nodes.size()) +
                                " nodes instead of " +
-                               std::to_string(second->second.n_nodes) + "."));
+                               std::to_string(second->second.n_nodes) +
+                               " (a cut line?)."));
         if (type == (dim == 2 ? 10 : 12))
           cells.push_back(nodes);
         type = second->second.corner_type;
@@ -130,35 +152,38 @@ namespace ContactDynamics
       }
 
       // Rewrites the $Elements section in place (format 2.2 or 4.1);
-      // returns whether an element was of second order.
+      // returns whether an element was rewritten.
       template <int dim>
       bool
       rewrite_elements(Lines                               &lines,
                        const bool                           v41,
                        std::vector<std::vector<long long>> &cells,
-                       unsigned int                        &linear_cells)
+                       unsigned int                        &other_cells,
+                       bool                                &seen)
       {
         const std::string section = "$Elements";
         std::size_t       i       = lines.find(section);
         if (i >= lines.text.size())
           return false;
-        const auto  header  = numbers(lines.at(i++, section), lines.file);
-        bool        changed = false;
         const auto &file    = lines.file;
+        const auto  header  = numbers(lines.text[lines.next(i, section)], file);
+        bool        changed = false;
         // one element "tag type n_tags tags... nodes..." (2.2) or
         // "tag nodes..." of a block of `type` (4.1)
         const auto element = [&](std::string &line, int &type) {
           std::vector<long long> w = numbers(line, file);
-          const std::size_t n_head = v41 ? 1 : (w.size() > 2 ? 3 + w[2] : 0);
-          AssertThrow(w.size() > n_head,
+          AssertThrow(v41 ? w.size() >= 2 :
+                            w.size() >= 4 && w[2] >= 0 &&
+                              w.size() > 3 + std::size_t(w[2]),
                       ExcMessage(file_error(file) +
                                  "has a malformed element '" + line +
                                  "' in $Elements."));
+          const std::size_t n_head = v41 ? 1 : 3 + w[2];
           if (!v41)
             type = w[1];
           std::vector<long long> nodes(w.begin() + n_head, w.end());
           const int              old_type = type;
-          rewrite_element<dim>(type, nodes, cells, linear_cells, file);
+          rewrite_element<dim>(type, nodes, cells, other_cells, seen, file);
           if (type == old_type)
             return;
           changed = true;
@@ -173,24 +198,22 @@ namespace ContactDynamics
           for (long long e = 0; e < header[0]; ++e)
             {
               int type = 0;
-              lines.at(i, section);
-              element(lines.text[i++], type);
+              element(lines.text[lines.next(i, section)], type);
             }
         else
           for (long long b = 0; b < header[0]; ++b)
             {
-              auto block = numbers(lines.at(i, section), file);
-              AssertThrow(block.size() == 4,
-                          ExcMessage(file_error(file) +
-                                     "has a malformed block header '" +
-                                     lines.text[i] + "' in $Elements."));
-              const std::size_t header_line = i++;
-              int               type        = block[2];
+              const std::size_t header_line = lines.next(i, section);
+              const auto        block = numbers(lines.text[header_line], file);
+              AssertThrow(
+                block.size() == 4,
+                ExcMessage(file_error(file) + "has a malformed block header '" +
+                           lines.text[header_line] + "' in $Elements."));
+              int type = block[2];
               for (long long e = 0; e < block[3]; ++e)
                 {
                   int element_type = block[2];
-                  lines.at(i, section);
-                  element(lines.text[i++], element_type);
+                  element(lines.text[lines.next(i, section)], element_type);
                   type = element_type;
                 }
               if (type != block[2])
@@ -201,45 +224,76 @@ namespace ContactDynamics
         return changed;
       }
 
-      // The coordinates of every node by its tag ($Nodes, 2.2 or 4.1)
+      // The coordinates of every node by its tag ($Nodes, 2.2 or 4.1). The
+      // parametric coordinates of a 4.1 file (Mesh.SaveParametric), which
+      // GridIn does not read, are cut off; `changed` says so.
       template <int dim>
       std::unordered_map<long long, Point<dim>>
-      read_nodes(const Lines &lines, const bool v41)
+      read_nodes(Lines &lines, const bool v41, bool &changed)
       {
         const std::string section = "$Nodes";
         std::size_t       i       = lines.find(section);
-        const auto        header  = numbers(lines.at(i++, section), lines.file);
+        AssertThrow(i < lines.text.size(),
+                    ExcMessage(file_error(lines.file) +
+                               "has no $Nodes section (a $ParametricNodes "
+                               "section is not read: save without "
+                               "Mesh.SaveParametric)."));
+        const auto header =
+          numbers(lines.text[lines.next(i, section)], lines.file);
         std::unordered_map<long long, Point<dim>> nodes;
-        const auto read_point = [&](const std::string &line, Point<dim> &p) {
+        // "tag x y z" (2.2) or "x y z" (4.1)
+        const auto read_point = [&](const std::string &line) {
           std::istringstream words(line);
+          long long          tag = 0;
+          if (!v41)
+            words >> tag;
+          Point<dim> p;
+          double     z = 0;
           for (unsigned int d = 0; d < dim; ++d)
             words >> p[d];
+          if (dim == 2)
+            words >> z;
           AssertThrow(words,
                       ExcMessage(file_error(lines.file) +
                                  "has a malformed node '" + line +
                                  "' in $Nodes."));
+          return std::make_pair(tag, p);
         };
         if (!v41)
-          for (long long n = 0; n < header[0]; ++n, ++i)
-            {
-              const std::string &line = lines.at(i, section);
-              const std::size_t  cut  = line.find_first_of(" \t");
-              const long long tag = numbers(line.substr(0, cut), lines.file)[0];
-              read_point(line.substr(cut), nodes[tag]);
-            }
+          for (long long n = 0; n < header[0]; ++n)
+            nodes.insert(read_point(lines.text[lines.next(i, section)]));
         else
           for (long long b = 0; b < header[0]; ++b)
             {
-              const auto block = numbers(lines.at(i++, section), lines.file);
+              const std::size_t header_line = lines.next(i, section);
+              const auto block = numbers(lines.text[header_line], lines.file);
               AssertThrow(block.size() == 4,
                           ExcMessage(file_error(lines.file) +
-                                     "has a malformed block header in "
-                                     "$Nodes."));
+                                     "has a malformed block header '" +
+                                     lines.text[header_line] + "' in $Nodes."));
               std::vector<long long> tags;
               for (long long n = 0; n < block[3]; ++n)
-                tags.push_back(numbers(lines.at(i++, section), lines.file)[0]);
+                tags.push_back(
+                  numbers(lines.text[lines.next(i, section)], lines.file)[0]);
               for (const long long tag : tags)
-                read_point(lines.at(i++, section), nodes[tag]);
+                {
+                  std::string &line = lines.text[lines.next(i, section)];
+                  nodes[tag]        = read_point(line).second;
+                  if (block[2] != 0) // x y z only
+                    {
+                      std::istringstream xyz(line);
+                      std::string        x, y, z;
+                      xyz >> x >> y >> z;
+                      line = x + ' ' + y + ' ' + z;
+                    }
+                }
+              if (block[2] != 0)
+                {
+                  lines.text[header_line] = std::to_string(block[0]) + ' ' +
+                                            std::to_string(block[1]) + " 0 " +
+                                            std::to_string(block[3]);
+                  changed = true;
+                }
             }
         return nodes;
       }
@@ -264,7 +318,11 @@ namespace ContactDynamics
       lines.file = file;
       std::ifstream in(file);
       for (std::string line; std::getline(in, line);)
-        lines.text.push_back(line);
+        {
+          if (!line.empty() && line.back() == '\r')
+            line.pop_back();
+          lines.text.push_back(line);
+        }
       const std::size_t format = lines.find("$MeshFormat");
       if (format >= lines.text.size())
         return result;
@@ -277,20 +335,32 @@ namespace ContactDynamics
       if (!(v22 || v41) || file_type != 0)
         return result;
 
-      std::vector<std::vector<long long>> cells;
-      unsigned int                        linear_cells = 0;
-      result.second_order =
-        rewrite_elements<dim>(lines, v41, cells, linear_cells);
-      if (!result.second_order)
-        return result;
-      AssertThrow(cells.empty() || linear_cells == 0,
+      std::vector<std::vector<long long>>       cells;
+      unsigned int                              other_cells = 0;
+      bool                                      seen = false, changed = false;
+      std::unordered_map<long long, Point<dim>> nodes;
+      try
+        {
+          result.second_order =
+            rewrite_elements<dim>(lines, v41, cells, other_cells, seen);
+          if (result.second_order || v41)
+            nodes = read_nodes<dim>(lines, v41, changed);
+        }
+      catch (const ExceptionBase &)
+        {
+          // a file of first order: GridIn reads it and words its errors
+          if (!seen)
+            return SecondOrderFile<dim>();
+          throw;
+        }
+      AssertThrow(cells.empty() || other_cells == 0,
                   ExcMessage(file_error(file) + "mixes " +
                              std::to_string(cells.size()) +
                              " cells of second order with " +
-                             std::to_string(linear_cells) +
-                             " of first order: mesh all cells with the same "
-                             "order."));
-      const auto nodes = read_nodes<dim>(lines, v41);
+                             std::to_string(other_cells) +
+                             " of first order (or triangles, tetrahedra): "
+                             "mesh all cells as quadrilaterals or "
+                             "hexahedra of the same order."));
       for (const auto &cell : cells)
         {
           result.cell_nodes.emplace_back();
@@ -304,6 +374,9 @@ namespace ContactDynamics
               result.cell_nodes.back().push_back(node->second);
             }
         }
+      result.rewritten = result.second_order || changed;
+      if (!result.rewritten)
+        return result;
       for (const std::string &line : lines.text)
         result.corner_text += line + '\n';
       return result;
@@ -349,8 +422,17 @@ namespace ContactDynamics
           std::vector<Point<dim>> points;
           for (const unsigned int v : cell->vertex_indices())
             points.push_back(cell->vertex(v));
-          const auto found = cell_of.find(key(points));
-          AssertThrow(found != cell_of.end(), ExcInternalError());
+          const auto         found = cell_of.find(key(points));
+          std::ostringstream where;
+          where << cell->vertex(0);
+          // (a cell with two corners at one point is found, but not its
+          // edges)
+          const std::string degenerate =
+            file_error(file) + "has a cell of second order with the corner (" +
+            where.str() +
+            ") whose edges cannot be told apart: two of its corners "
+            "coincide. Mesh it anew.";
+          AssertThrow(found != cell_of.end(), ExcMessage(degenerate));
           const auto &g = file_nodes.cell_nodes[found->second];
           // the file's corner at each vertex
           std::array<unsigned int, n_corners> corner;
@@ -364,7 +446,7 @@ namespace ContactDynamics
             std::sort(vertices.begin(), vertices.end());
             const auto e =
               std::find(entities.begin(), entities.end(), vertices);
-            AssertThrow(e != entities.end(), ExcInternalError());
+            AssertThrow(e != entities.end(), ExcMessage(degenerate));
             return g[n_corners + (e - entities.begin())];
           };
           for (const unsigned int l : cell->line_indices())

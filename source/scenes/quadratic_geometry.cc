@@ -23,18 +23,17 @@ namespace ContactDynamics
       return text + ")";
     }
 
-    // det of the coarse map's Jacobian at the reference point xi
-    template <int dim>
-    double
-    map_determinant(const FiniteElement<dim>      &fe,
-                    const std::vector<Point<dim>> &nodes,
-                    const Point<dim>              &xi)
+    // the quadratic 1-D basis on the nodes 0, 1/2, 1 and its derivative
+    std::array<double, 3>
+    basis_1d(const double x)
     {
-      Tensor<2, dim> J;
-      for (unsigned int i = 0; i < nodes.size(); ++i)
-        J += outer_product(static_cast<Tensor<1, dim>>(nodes[i]),
-                           fe.shape_grad(i, xi));
-      return determinant(J);
+      return {{(1 - x) * (1 - 2 * x), 4 * x * (1 - x), x * (2 * x - 1)}};
+    }
+
+    std::array<double, 3>
+    derivative_1d(const double x)
+    {
+      return {{4 * x - 3, 4 - 8 * x, 4 * x - 1}};
     }
   } // namespace
 
@@ -55,30 +54,29 @@ namespace ContactDynamics
           factor[d] = static_cast<unsigned int>(std::lround(2 * p[d]));
         node_factor.push_back(factor);
       }
-    // a mid-side node pulled past its neighbours folds the cell where the
-    // corners alone would not show it
-    std::vector<Point<dim>> checked = QGauss<dim>(3).get_points();
-    for (const unsigned int v : GeometryInfo<dim>::vertex_indices())
-      checked.push_back(GeometryInfo<dim>::unit_cell_vertex(v));
+    // A mid-side node pulled past its neighbours folds the cell where the
+    // corners alone would not show it, first at the nodes and the edges:
+    // Gauss-Lobatto points (the nodes among them) and Gauss points.
+    std::vector<Point<dim>> checked = QGaussLobatto<dim>(5).get_points();
+    const QGauss<dim> gauss(3);
+    checked.insert(checked.end(),
+                   gauss.get_points().begin(),
+                   gauss.get_points().end());
     for (const auto &cell_nodes : coarse_nodes)
       {
-        AssertThrow(cell_nodes.size() == element->n_dofs_per_cell(),
+        AssertThrow(cell_nodes.size() == node_factor.size(),
                     ExcInternalError());
         for (const Point<dim> &xi : checked)
           {
-            const double det = map_determinant(*element, cell_nodes, xi);
-            if (det > 0)
-              continue;
-            Point<dim> x;
-            for (unsigned int i = 0; i < cell_nodes.size(); ++i)
-              x += element->shape_value(i, xi) * cell_nodes[i];
-            AssertThrow(false,
+            const double det = determinant(jacobian(cell_nodes, xi));
+            AssertThrow(det > 0,
                         ExcMessage(
                           source + "has a second-order cell (corner " +
                           point_text(cell_nodes[0]) +
                           ") folded by its mid-side or centre nodes: its "
                           "Jacobian determinant is " +
-                          format_number(det) + " <= 0 at " + point_text(x) +
+                          format_number(det) + " <= 0 at " +
+                          point_text(map(cell_nodes, xi)) +
                           ". Move those nodes back between the corners (or "
                           "mesh the curved boundary finer)."));
           }
@@ -89,6 +87,55 @@ namespace ContactDynamics
 
   template <int dim>
   QuadraticGeometry<dim>::~QuadraticGeometry() = default;
+
+
+
+  template <int dim>
+  Point<dim>
+  QuadraticGeometry<dim>::map(const std::vector<Point<dim>> &nodes,
+                              const Point<dim>              &xi) const
+  {
+    // the tensor-product basis by its 1-D factors (FE_Q::shape_value per
+    // node and point would cost about as much as the cell's assembly)
+    std::array<std::array<double, 3>, dim> L;
+    for (unsigned int d = 0; d < dim; ++d)
+      L[d] = basis_1d(xi[d]);
+    Point<dim> x;
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      {
+        double N = 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          N *= L[d][node_factor[i][d]];
+        x += N * nodes[i];
+      }
+    return x;
+  }
+
+
+
+  template <int dim>
+  Tensor<2, dim>
+  QuadraticGeometry<dim>::jacobian(const std::vector<Point<dim>> &nodes,
+                                   const Point<dim>              &xi) const
+  {
+    std::array<std::array<double, 3>, dim> L, dL;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        L[d]  = basis_1d(xi[d]);
+        dL[d] = derivative_1d(xi[d]);
+      }
+    Tensor<2, dim> J;
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      for (unsigned int k = 0; k < dim; ++k)
+        {
+          double dN = 1;
+          for (unsigned int d = 0; d < dim; ++d)
+            dN *= (d == k ? dL[d] : L[d])[node_factor[i][d]];
+          for (unsigned int c = 0; c < dim; ++c)
+            J[c][k] += nodes[i][c] * dN;
+        }
+    return J;
+  }
 
 
 
@@ -111,34 +158,16 @@ namespace ContactDynamics
     while (ancestor->level() > 0)
       {
         const auto         parent = ancestor->parent();
-        const unsigned int child =
-          ancestor->parent()->child_iterator_to_index(ancestor);
+        const unsigned int child  = parent->child_iterator_to_index(ancestor);
         for (Point<dim> &p : xi)
           p = GeometryInfo<dim>::child_to_cell_coordinates(p, child);
         ancestor = parent;
       }
     AssertIndexRange(ancestor->index(), coarse_nodes.size());
-    const auto             &nodes = coarse_nodes[ancestor->index()];
-    std::vector<Point<dim>> points(xi.size());
-    // the tensor-product basis by its 1-D factors (FE_Q::shape_value per
-    // node and point would cost about as much as the cell's assembly)
-    for (unsigned int q = 0; q < xi.size(); ++q)
-      {
-        std::array<std::array<double, 3>, dim> L;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const double x = xi[q][d];
-            L[d] = {{(1 - x) * (1 - 2 * x), 4 * x * (1 - x), x * (2 * x - 1)}};
-          }
-        for (unsigned int i = 0; i < nodes.size(); ++i)
-          {
-            double N = 1;
-            for (unsigned int d = 0; d < dim; ++d)
-              N *= L[d][node_factor[i][d]];
-            points[q] += N * nodes[i];
-          }
-      }
-    return points;
+    const auto &nodes = coarse_nodes[ancestor->index()];
+    for (Point<dim> &p : xi)
+      p = map(nodes, p);
+    return xi;
   }
 
 

@@ -3,6 +3,7 @@
 //   gmsh quarter_annulus.geo -2 -format msh22 -o quarter_annulus_order2.msh
 //   gmsh quarter_annulus.geo -2 -format msh41 -o quarter_annulus_order2_v41.msh
 //   gmsh quarter_annulus.geo -2 -setnumber n 2 -format msh22 -o quarter_annulus_order2_fine.msh
+//   gmsh quarter_annulus.geo -2 -format msh41 -save_parametric -o quarter_annulus_order2_parametric.msh
 DefineConstant[n = 1];
 SetFactory("Built-in");
 Point(1) = {0, 0, 0};

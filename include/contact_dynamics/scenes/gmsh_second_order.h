@@ -27,18 +27,24 @@ namespace ContactDynamics
     {
       /** Whether the file has elements of second order. */
       bool second_order = false;
-      /** With second order: the file with only the corner nodes' elements. */
+      /**
+       * Whether the file had to be rewritten for GridIn (second order, or
+       * the parametric coordinates of format 4.1), into corner_text: the
+       * elements of second order as their corner elements.
+       */
+      bool        rewritten = false;
       std::string corner_text;
       /** The nodes of each cell of dimension dim, in Gmsh's order. */
       std::vector<std::vector<Point<dim>>> cell_nodes;
     };
 
     /**
-     * Reads an ASCII file of format 2.2 or 4.1; anything else (first order,
-     * another version, binary) comes back with second_order = false and is
-     * left to GridIn. Throws a message naming the file for serendipity
-     * elements (8-node quadrilaterals, 20-node hexahedra) and for meshes
-     * that mix cells of first and second order.
+     * Reads an ASCII file of format 2.2 or 4.1; anything else (another
+     * version, binary) and a file of first order that it cannot parse come
+     * back with rewritten = false and are left to GridIn. Throws a message
+     * naming the file for serendipity elements (8-node quadrilaterals,
+     * 20-node hexahedra), triangles and tetrahedra of second order, and
+     * meshes that mix cells of second order with others.
      */
     template <int dim>
     SecondOrderFile<dim>

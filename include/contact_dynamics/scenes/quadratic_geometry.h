@@ -49,11 +49,31 @@ namespace ContactDynamics
     support_points(
       const typename Triangulation<dim>::cell_iterator &cell) const;
 
+    /** The sum of all nodes' coordinates (a checkpoint's signature). */
+    double
+    node_sum() const
+    {
+      double sum = 0;
+      for (const auto &cell : coarse_nodes)
+        for (const auto &p : cell)
+          for (unsigned int d = 0; d < dim; ++d)
+            sum += p[d];
+      return sum;
+    }
+
     unsigned int
     n_coarse_cells() const
     {
       return coarse_nodes.size();
     }
+
+    /** The map of a coarse cell with these nodes at the reference point. */
+    Point<dim>
+    map(const std::vector<Point<dim>> &nodes, const Point<dim> &xi) const;
+
+    /** Its Jacobian d x / d xi there. */
+    Tensor<2, dim>
+    jacobian(const std::vector<Point<dim>> &nodes, const Point<dim> &xi) const;
 
   private:
     std::vector<std::vector<Point<dim>>>     coarse_nodes;
