@@ -129,13 +129,17 @@ def timed(exe, prm, work):
     info = bench_common.parse_run_log(p.stdout, [])
     cells = re.findall(r"(\d+) cells", p.stdout)
     info["cells"] = int(cells[0]) if cells else ""
+    # an adapted mesh: the unknowns of the last one
+    changes = re.findall(r"-> (\d+) unknowns", p.stdout)
+    if changes:
+        info["unknowns"] = int(changes[-1])
     return wall, info
 
 
 def hertz(exe, work, mesh, repeats, levels=0):
     name = f"hertz_{mesh.stem}_{levels}"
     out, prm = work / name, work / f"{name}.prm"
-    changes = {"Scene/Mesh file": str(mesh), "Output/VTU interval": 0,
+    changes = {"Scene/Mesh file": str(mesh), "Output/VTU interval": 2,
                "Output/Output directory": str(out)}
     if levels:
         changes.update({"Mesh refinement/Adapt to contact": "true",
