@@ -53,7 +53,8 @@ $Elements
 $EndElements
 )";
 
-  const char *plate = R"($MeshFormat
+  // the names of the plate's body and sides
+  const std::string plate_names = R"($MeshFormat
 2.2 0 8
 $EndMeshFormat
 $PhysicalNames
@@ -63,7 +64,9 @@ $PhysicalNames
 1 4 "sides"
 2 1 "plate"
 $EndPhysicalNames
-$Nodes
+)";
+
+  const std::string plate = plate_names + R"($Nodes
 4
 1 0 0 0
 2 1 0 0
@@ -85,17 +88,7 @@ $EndElements
   std::string
   plate_of_second_order(const std::string &cell, const unsigned int cells = 5)
   {
-    return R"($MeshFormat
-2.2 0 8
-$EndMeshFormat
-$PhysicalNames
-4
-1 2 "bottom"
-1 3 "top"
-1 4 "sides"
-2 1 "plate"
-$EndPhysicalNames
-$Nodes
+    return plate_names + R"($Nodes
 9
 1 0 0 0
 2 1 0 0

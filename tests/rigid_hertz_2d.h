@@ -68,4 +68,19 @@ rigid_hertz_2d(const ContactDynamics::Simulator<2> &simulator,
   return {P, a_fe / a - 1, peak / p0 - 1, force / P - 1};
 }
 
+// Half-width and peak within `bound` of Hertz's, the pressures integrating
+// to the load within 0.5 % (equilibrium); `name` begins each line.
+inline void
+check_rigid_hertz(const std::string &name,
+                  const HertzResult &r,
+                  const double       bound)
+{
+  check_range(name + "half-width / Hertz - 1", r.half_width, -bound, bound);
+  check_range(name + "peak pressure / Hertz - 1", r.peak, -bound, bound);
+  check_range(name + "integral of the pressures / load - 1",
+              r.equilibrium,
+              -0.005,
+              0.005);
+}
+
 #endif
